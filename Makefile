@@ -1,0 +1,137 @@
+# certbox: proven, tight axis-aligned bounding boxes.
+#   make          build the static and shared libraries and the demo (build/)
+#   make demo     run the demo (the main job)
+#   make check    run every test, proofs included (installs missing packages)
+#   make proof    re-run the Frama-C/WP proofs and rewrite proofs/report.md
+#   make install  PREFIX=/usr/local DESTDIR=
+
+VERSION   := 0.1.0
+SOVERSION := 0
+PREFIX    ?= /usr/local
+LIBDIR    ?= $(PREFIX)/lib
+INCDIR    ?= $(PREFIX)/include
+PCDIR     ?= $(LIBDIR)/pkgconfig
+
+CC       ?= cc
+CXX      ?= c++
+# The proof assumes every operation rounds once to nearest in binary64:
+# ISO C mode (no FMA contraction), no -ffast-math, SSE2 on x86.
+IEEEFLAGS := -ffp-contract=off -fno-fast-math
+WARN      := -Wall -Wextra -Wpedantic -Werror
+CFLAGS   ?= -O2
+ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Isrc
+SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+
+B := build
+LIBSRC  := src/cbx_interval.c src/cbx_status.c
+HEADERS := src/certbox.h src/cbx_round.h specs/cbx_spec.h
+LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
+PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
+SONAME  := libcertbox.so.$(SOVERSION)
+
+.PHONY: install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
+all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/demo $(B)/certbox.pc
+
+$(B)/obj/%.o: src/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(ALLCFLAGS) -c $< -o $@
+$(B)/pic/%.o: src/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(ALLCFLAGS) -fPIC -fvisibility=default -c $< -o $@
+
+$(B)/libcertbox.a: $(LIBOBJ)
+	rm -f $@ && ar rcs $@ $^
+$(B)/libcertbox.so.$(VERSION): $(PICOBJ)
+	$(CC) -shared -Wl,-soname,$(SONAME) -o $@ $^ -lm
+$(B)/libcertbox.so: $(B)/libcertbox.so.$(VERSION)
+	ln -sf libcertbox.so.$(VERSION) $(B)/$(SONAME)
+	ln -sf libcertbox.so.$(VERSION) $@
+
+$(B)/certbox.pc: certbox.pc.in Makefile
+	@mkdir -p $(@D)
+	sed -e 's#@PREFIX@#$(PREFIX)#' -e 's#@LIBDIR@#$(LIBDIR)#' -e 's#@INCDIR@#$(INCDIR)#' \
+	    -e 's#@VERSION@#$(VERSION)#' $< > $@
+
+# ---- tests ---------------------------------------------------------------
+TESTUTIL := tests/exact_util.c
+$(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
+	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lgmp -lm -o $@
+$(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
+	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lgmp -lm -o $@
+$(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lgmp -lm -o $@
+
+demo: check-deps-test
+	$(MAKE) $(B)/demo
+	./$(B)/demo
+
+TESTS := exact badinput
+test: $(TESTS:%=$(B)/test_%)
+	./$(B)/test_badinput
+	./$(B)/test_exact 1000000 1
+
+# Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
+test-san: $(TESTS:%=$(B)/san/test_%)
+	./$(B)/san/test_badinput
+	./$(B)/san/test_exact 200000 2
+
+# The public header compiles as C99, C11 and C++.
+header-check:
+	@mkdir -p $(B)
+	printf '#include "certbox.h"\nint main(void){cbx_box b; (void)b; return 0;}\n' > $(B)/hc.c
+	$(CC) -std=c99 $(WARN) -Isrc -c $(B)/hc.c -o $(B)/hc.o
+	$(CC) -std=c11 $(WARN) -Isrc -c $(B)/hc.c -o $(B)/hc.o
+	cp $(B)/hc.c $(B)/hc.cc && $(CXX) -std=c++11 $(WARN) -Isrc -c $(B)/hc.cc -o $(B)/hc.o
+
+# ---- proofs --------------------------------------------------------------
+proof: check-deps-proof
+	sh proofs/run.sh
+
+proof-check: check-deps-proof
+	sh proofs/run.sh --check
+
+check-deps-test:
+	@sh scripts/deps.sh test
+check-deps:
+	@sh scripts/deps.sh all
+check-deps-proof:
+	@sh scripts/deps.sh proof
+
+# Each step stops the run on failure; the last line counts the suites.
+check: check-deps
+	$(MAKE) all
+	$(MAKE) header-check
+	$(MAKE) test
+	$(MAKE) test-san
+	$(MAKE) install-check
+	$(MAKE) proof-check
+	@echo "check: 7 passed, 0 failed"
+
+# make install into a scratch DESTDIR, then build a program against it
+# with pkg-config, static and shared.
+install-check: all
+	rm -rf $(B)/stage
+	$(MAKE) install DESTDIR=$(CURDIR)/$(B)/stage PREFIX=/opt/certbox
+	printf '#include <certbox.h>\n#include <stdio.h>\nint main(void){cbx_affine a={{{1,0,0,1},{0,1,0,2},{0,0,1,3}}};cbx_box b={{0,0,0},{1,1,1}},o;int s=cbx_transform_box(&a,&b,&o);printf("%%s %%g %%g\\n",cbx_status_name(s),o.lo[0],o.hi[0]);return s;}\n' > $(B)/ic.c
+	PKG_CONFIG_SYSROOT_DIR=$(CURDIR)/$(B)/stage PKG_CONFIG_LIBDIR=$(CURDIR)/$(B)/stage/opt/certbox/lib/pkgconfig \
+	  sh -c '$(CC) -std=c99 $(WARN) $(B)/ic.c $$(pkg-config --cflags --libs certbox) -o $(B)/ic && LD_LIBRARY_PATH=$(CURDIR)/$(B)/stage/opt/certbox/lib ./$(B)/ic'
+	test -L $(B)/stage/opt/certbox/lib/libcertbox.so.$(SOVERSION)
+
+# ---- install -------------------------------------------------------------
+install: all
+	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCDIR) $(DESTDIR)$(PCDIR)
+	install -m 644 $(B)/libcertbox.a $(DESTDIR)$(LIBDIR)/
+	install -m 755 $(B)/libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
+	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcertbox.so
+	install -m 644 src/certbox.h specs/cbx_spec.h $(DESTDIR)$(INCDIR)/
+	sed -e 's#@PREFIX@#$(PREFIX)#' -e 's#@LIBDIR@#$(LIBDIR)#' -e 's#@INCDIR@#$(INCDIR)#' \
+	    -e 's#@VERSION@#$(VERSION)#' certbox.pc.in > $(DESTDIR)$(PCDIR)/certbox.pc
+
+uninstall:
+	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
+	      $(DESTDIR)$(INCDIR)/certbox.h $(DESTDIR)$(INCDIR)/cbx_spec.h $(DESTDIR)$(PCDIR)/certbox.pc
+
+clean:
+	rm -rf $(B)

@@ -1,0 +1,43 @@
+#!/bin/sh
+# Run the Frama-C/WP proofs of certbox and write proofs/report.md.
+#   sh proofs/run.sh          prove, write the report
+#   sh proofs/run.sh --check  same, and exit 1 unless every goal is proved
+#                             and the smoke tests find no inconsistent contract
+# Model: WP's default (Typed memory, IEEE float), -wp-rte; provers: see
+# proofs/README.md.  Nothing is cached: the provers prove every goal each run.
+set -eu
+root=$(cd "$(dirname "$0")/.." && pwd)
+cd "$root"
+check=0; [ "${1:-}" = --check ] && check=1
+out=build/proof
+mkdir -p $out
+conf=$(sh proofs/setup.sh $out)
+export WHY3CONFIG="$conf"
+SRC="src/cbx_interval.c src/cbx_status.c"
+FC="frama-c -cpp-extra-args=-I$root/src -cpp-extra-args=-I$root/specs"
+WP="-wp -wp-rte -wp-prover cvc4r,z3r -wp-timeout ${CBX_WP_TIMEOUT:-30} -wp-par ${CBX_WP_PAR:-2} -wp-cache none"
+# Pass A: rounding primitives and kernels, with -wp-split (their assertions
+# are two-sided bounds; one goal per side proves fastest).
+# Pass B: everything else (lemmas, domain checks, public functions) without
+# -wp-split (splitting the behaviors' postconditions multiplies goals).
+KERNELS=cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,term_lo,term_hi,term_mag,widening,axis_lo,axis_hi
+echo "proof: pass A, primitives and kernels"
+start=$(date +%s)
+# shellcheck disable=SC2086
+$FC $WP -wp-split -wp-fct $KERNELS $SRC > $out/wp-a.log 2>&1 || true
+echo "proof: pass B, lemmas and public functions"
+# shellcheck disable=SC2086
+$FC $WP -wp-skip-fct $KERNELS $SRC > $out/wp-b.log 2>&1 || true
+cat $out/wp-a.log $out/wp-b.log > $out/wp.log
+mid=$(date +%s)
+echo "proof: smoke tests (inconsistent contracts)"
+# shellcheck disable=SC2086
+$FC -wp -wp-rte -wp-prover cvc4r,z3r -wp-timeout 10 -wp-par ${CBX_WP_PAR:-2} -wp-cache none \
+    -wp-smoke-tests -wp-prop=@smoke $SRC > $out/smoke.log 2>&1 || true
+end=$(date +%s)
+python3 proofs/report.py $out/wp.log $out/smoke.log $((mid - start)) $((end - mid)) > proofs/report.md.new
+mv proofs/report.md.new proofs/report.md
+tail -n 6 proofs/report.md
+if [ $check = 1 ]; then
+  grep -q '^RESULT: PROVED' proofs/report.md || { echo "proof: FAILED (see proofs/report.md, $out/wp.log)"; exit 1; }
+fi

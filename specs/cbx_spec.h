@@ -1,0 +1,161 @@
+/*
+ * ACSL logic of certbox: every promise the contracts make is built from the
+ * definitions here.  Read by Frama-C only (certbox.h includes this file when
+ * __FRAMAC__ is defined); a C compiler never sees it.
+ *
+ * Arithmetic in these definitions is exact real arithmetic on the values of
+ * the C doubles: `m*l` is the exact product, not the rounded one.
+ */
+#ifndef CBX_SPEC_H
+#define CBX_SPEC_H
+
+/*@ // ---------------------------------------------------------------------
+    // The proven domain of one product m*c: |m*c| <= 2^1018.  A named
+    // predicate (not an inline formula) so that the lemmas below have a
+    // trigger: the provers instantiate them wherever in_dom(x, y) occurs.
+    // ---------------------------------------------------------------------
+    predicate in_dom(real x, real y) = -0x1p1018 <= x*y <= 0x1p1018;
+
+    // One magnitude class: |m| <= 2^k and |c| <= 2^(1018-k).
+    predicate cls(real m, real c, real bm, real bc) =
+      -bm <= m <= bm && -bc <= c <= bc;
+
+    // The domain of a product, checked at run time by cbx_dom_pair():
+    // one of 18 magnitude classes (k = 509, 0, 64, ..., 960, 1018).
+    predicate dom_pair(real m, real c) =
+         cls(m, c, 0x1p509,  0x1p509)
+      || cls(m, c, 0x1p0,    0x1p1018) || cls(m, c, 0x1p64,   0x1p954)
+      || cls(m, c, 0x1p128,  0x1p890)  || cls(m, c, 0x1p192,  0x1p826)
+      || cls(m, c, 0x1p256,  0x1p762)  || cls(m, c, 0x1p320,  0x1p698)
+      || cls(m, c, 0x1p384,  0x1p634)  || cls(m, c, 0x1p448,  0x1p570)
+      || cls(m, c, 0x1p512,  0x1p506)  || cls(m, c, 0x1p576,  0x1p442)
+      || cls(m, c, 0x1p640,  0x1p378)  || cls(m, c, 0x1p704,  0x1p314)
+      || cls(m, c, 0x1p768,  0x1p250)  || cls(m, c, 0x1p832,  0x1p186)
+      || cls(m, c, 0x1p896,  0x1p122)  || cls(m, c, 0x1p960,  0x1p58)
+      || cls(m, c, 0x1p1018, 0x1p0);
+
+    // Nonlinear facts, proven once over the reals (no floats in context).
+    lemma cls_509:  \forall real m, c; cls(m, c, 0x1p509, 0x1p509) ==> in_dom(m, c);
+    lemma cls_0:    \forall real m, c; cls(m, c, 0x1p0, 0x1p1018) ==> in_dom(m, c);
+    lemma cls_64:   \forall real m, c; cls(m, c, 0x1p64, 0x1p954) ==> in_dom(m, c);
+    lemma cls_128:  \forall real m, c; cls(m, c, 0x1p128, 0x1p890) ==> in_dom(m, c);
+    lemma cls_192:  \forall real m, c; cls(m, c, 0x1p192, 0x1p826) ==> in_dom(m, c);
+    lemma cls_256:  \forall real m, c; cls(m, c, 0x1p256, 0x1p762) ==> in_dom(m, c);
+    lemma cls_320:  \forall real m, c; cls(m, c, 0x1p320, 0x1p698) ==> in_dom(m, c);
+    lemma cls_384:  \forall real m, c; cls(m, c, 0x1p384, 0x1p634) ==> in_dom(m, c);
+    lemma cls_448:  \forall real m, c; cls(m, c, 0x1p448, 0x1p570) ==> in_dom(m, c);
+    lemma cls_512:  \forall real m, c; cls(m, c, 0x1p512, 0x1p506) ==> in_dom(m, c);
+    lemma cls_576:  \forall real m, c; cls(m, c, 0x1p576, 0x1p442) ==> in_dom(m, c);
+    lemma cls_640:  \forall real m, c; cls(m, c, 0x1p640, 0x1p378) ==> in_dom(m, c);
+    lemma cls_704:  \forall real m, c; cls(m, c, 0x1p704, 0x1p314) ==> in_dom(m, c);
+    lemma cls_768:  \forall real m, c; cls(m, c, 0x1p768, 0x1p250) ==> in_dom(m, c);
+    lemma cls_832:  \forall real m, c; cls(m, c, 0x1p832, 0x1p186) ==> in_dom(m, c);
+    lemma cls_896:  \forall real m, c; cls(m, c, 0x1p896, 0x1p122) ==> in_dom(m, c);
+    lemma cls_960:  \forall real m, c; cls(m, c, 0x1p960, 0x1p58) ==> in_dom(m, c);
+    lemma cls_1018: \forall real m, c; cls(m, c, 0x1p1018, 0x1p0) ==> in_dom(m, c);
+
+    lemma dom_pair_in_dom: \forall real m, c; dom_pair(m, c) ==> in_dom(m, c);
+
+    // ---------------------------------------------------------------------
+    // One term of Arvo's sum: m*c for c in {l, h}.
+    // ---------------------------------------------------------------------
+    logic real tmin(real m, real l, real h) = \min(m*l, m*h);
+    logic real tmax(real m, real l, real h) = \max(m*l, m*h);
+    logic real tmag(real m, real l, real h) = \max(\abs(m*l), \abs(m*h));
+
+    // Exact bounds of one output coordinate over the box, and its scale
+    // S = |t| + sum_j |m_j| max(|l_j|, |h_j|) used by the tightness bound.
+    logic real row_lo(real m0, real m1, real m2, real t,
+                      real l0, real h0, real l1, real h1, real l2, real h2) =
+      t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2);
+    logic real row_hi(real m0, real m1, real m2, real t,
+                      real l0, real h0, real l1, real h1, real l2, real h2) =
+      t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2);
+    logic real row_mag(real m0, real m1, real m2, real t,
+                       real l0, real h0, real l1, real h1, real l2, real h2) =
+      \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + tmag(m2, l2, h2);
+
+    // r is below the image of all 8 corners (c_j in {l_j, h_j}).
+    predicate below8(real r, real m0, real m1, real m2, real t,
+                     real l0, real h0, real l1, real h1, real l2, real h2) =
+         r <= m0*l0 + m1*l1 + m2*l2 + t && r <= m0*l0 + m1*l1 + m2*h2 + t
+      && r <= m0*l0 + m1*h1 + m2*l2 + t && r <= m0*l0 + m1*h1 + m2*h2 + t
+      && r <= m0*h0 + m1*l1 + m2*l2 + t && r <= m0*h0 + m1*l1 + m2*h2 + t
+      && r <= m0*h0 + m1*h1 + m2*l2 + t && r <= m0*h0 + m1*h1 + m2*h2 + t;
+    // r is above the image of all 8 corners.
+    predicate above8(real r, real m0, real m1, real m2, real t,
+                     real l0, real h0, real l1, real h1, real l2, real h2) =
+         r >= m0*l0 + m1*l1 + m2*l2 + t && r >= m0*l0 + m1*l1 + m2*h2 + t
+      && r >= m0*l0 + m1*h1 + m2*l2 + t && r >= m0*l0 + m1*h1 + m2*h2 + t
+      && r >= m0*h0 + m1*l1 + m2*l2 + t && r >= m0*h0 + m1*l1 + m2*h2 + t
+      && r >= m0*h0 + m1*h1 + m2*l2 + t && r >= m0*h0 + m1*h1 + m2*h2 + t;
+
+    // Tightness: at most 12 u S + 2^-1065 below (above) the exact bound.
+    predicate lo_tight(real r, real m0, real m1, real m2, real t,
+                       real l0, real h0, real l1, real h1, real l2, real h2) =
+      r >= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+           - (0x1.8p-50 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 0x1p-1065);
+    predicate hi_tight(real r, real m0, real m1, real m2, real t,
+                       real l0, real h0, real l1, real h1, real l2, real h2) =
+      r <= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+           + (0x1.8p-50 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 0x1p-1065);
+
+    // The inputs of one output row are in the proven domain.
+    predicate row_in_dom(real m0, real m1, real m2, real t,
+                         real l0, real h0, real l1, real h1, real l2, real h2) =
+      dom_pair(m0, l0) && dom_pair(m0, h0) && dom_pair(m1, l1) && dom_pair(m1, h1)
+      && dom_pair(m2, l2) && dom_pair(m2, h2) && -0x1p1018 <= t <= 0x1p1018;
+*/
+
+/*@ // ---------------------------------------------------------------------
+    // The same notions on the public structures.
+    // ---------------------------------------------------------------------
+    predicate has_nan(cbx_affine *a, cbx_box *b) =
+         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
+      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
+      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3])
+      || \is_NaN(b->lo[0]) || \is_NaN(b->lo[1]) || \is_NaN(b->lo[2])
+      || \is_NaN(b->hi[0]) || \is_NaN(b->hi[1]) || \is_NaN(b->hi[2]);
+
+    // IEEE comparison (also meaningful for infinite bounds).
+    predicate is_empty(cbx_box *b) =
+      \lt_double(b->hi[0], b->lo[0]) || \lt_double(b->hi[1], b->lo[1])
+      || \lt_double(b->hi[2], b->lo[2]);
+
+    predicate whole_axis(cbx_box *o, integer i) =
+      \is_minus_infinity(o->lo[i]) && \is_plus_infinity(o->hi[i]);
+    predicate whole_space(cbx_box *o) =
+      whole_axis(o, 0) && whole_axis(o, 1) && whole_axis(o, 2);
+    predicate empty_out(cbx_box *o) =
+         \is_plus_infinity(o->lo[0]) && \is_minus_infinity(o->hi[0])
+      && \is_plus_infinity(o->lo[1]) && \is_minus_infinity(o->hi[1])
+      && \is_plus_infinity(o->lo[2]) && \is_minus_infinity(o->hi[2]);
+
+    // All inputs of row i are finite and in the proven domain.
+    predicate row_dom(cbx_affine *a, cbx_box *b, integer i) =
+      \is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+      && \is_finite(a->m[i][3])
+      && \is_finite(b->lo[0]) && \is_finite(b->hi[0]) && \is_finite(b->lo[1])
+      && \is_finite(b->hi[1]) && \is_finite(b->lo[2]) && \is_finite(b->hi[2])
+      && row_in_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                    b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
+
+    // Axis i of o is finite, contains the image of the 8 corners, and is tight.
+    predicate axis_proven(cbx_affine *a, cbx_box *b, cbx_box *o, integer i) =
+      \is_finite(o->lo[i]) && \is_finite(o->hi[i])
+      && below8(o->lo[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2])
+      && above8(o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2])
+      && lo_tight(o->lo[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                  b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2])
+      && hi_tight(o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                  b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
+
+    // What the function promises on axis i: proven inside the domain,
+    // the whole line [-inf, +inf] outside it.
+    predicate axis_sound(cbx_affine *a, cbx_box *b, cbx_box *o, integer i) =
+      (row_dom(a, b, i) ==> axis_proven(a, b, o, i))
+      && (!row_dom(a, b, i) ==> whole_axis(o, i));
+*/
+#endif /* CBX_SPEC_H */

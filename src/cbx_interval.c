@@ -1,0 +1,344 @@
+/*
+ * Arvo's interval form (Graphics Gems I, "Transforming Axis-Aligned
+ * Bounding Boxes", Fig. 1), outward rounded.
+ *
+ * Per output axis: start at the translation t and add, for each input axis
+ * j, the smaller (for lo) or larger (for hi) of m_j*l_j and m_j*h_j, all in
+ * round-to-nearest.  Then widen once by w = 5.5 u R + 2^-1067, where
+ * R = |t| + sum_j max(|m_j l_j|, |m_j h_j|) (computed).  The rounding error
+ * of the whole sum is at most about 5 u S (4 u S in the sum, u S in the final
+ * widening step), so one widening per bound pays for every rounding; the
+ * proof (asserts below) keeps track of it step by step.
+ */
+#include "certbox.h"
+#include "cbx_round.h"
+
+/* The smaller of m*l and m*h: error u*tmag + eta (one rounding each). */
+/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
+    requires dom: in_dom(m, l) && in_dom(m, h);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures err: \abs(\result - tmin(m, l, h)) <= 0x1p-53 * tmag(m, l, h) + 0x1p-1074;
+*/
+static inline double term_lo(double m, double l, double h)
+{
+    double p = cbx_mul_rn(m, l);
+    double q = cbx_mul_rn(m, h);
+    return cbx_min2(p, q);
+}
+
+/* The larger of m*l and m*h. */
+/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
+    requires dom: in_dom(m, l) && in_dom(m, h);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures err: \abs(\result - tmax(m, l, h)) <= 0x1p-53 * tmag(m, l, h) + 0x1p-1074;
+*/
+static inline double term_hi(double m, double l, double h)
+{
+    double p = cbx_mul_rn(m, l);
+    double q = cbx_mul_rn(m, h);
+    return cbx_max2(p, q);
+}
+
+/* max(|m*l|, |m*h|), within a relative u of the exact value. */
+/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
+    requires dom: in_dom(m, l) && in_dom(m, h);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures lo: \result >= tmag(m, l, h) - 0x1p-53 * tmag(m, l, h) - 0x1p-1074;
+    ensures hi: \result <= tmag(m, l, h) + 0x1p-53 * tmag(m, l, h) + 0x1p-1074;
+    ensures pos: \result >= 0;
+*/
+static inline double term_mag(double m, double l, double h)
+{
+    double p = cbx_mul_rn(m, l);
+    double q = cbx_mul_rn(m, h);
+    return cbx_max2(cbx_abs(p), cbx_abs(q));
+}
+
+/* The computed scale R = |t| + g0 + g1 + g2 and the widening 5.5 u R + 2^-1067. */
+/*@ requires fin: \is_finite(t) && \is_finite(g0) && \is_finite(g1) && \is_finite(g2);
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    requires r0: 0 <= g0 <= 0x1p1018 + 0x1p966;
+    requires r1: 0 <= g1 <= 0x1p1018 + 0x1p966;
+    requires r2: 0 <= g2 <= 0x1p1018 + 0x1p966;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures lo: \result >= 0x1.6p-51 * (\abs(t) + g0 + g1 + g2) * (1 - 0x1p-50) + 0x1p-1068;
+    ensures hi: \result <= 0x1.6p-51 * (\abs(t) + g0 + g1 + g2) * (1 + 0x1p-50) + 0x1p-1066;
+*/
+static inline double widening(double t, double g0, double g1, double g2)
+{
+    double r0 = cbx_abs(t);
+    double r1 = cbx_add_rn(r0, g0);
+    double r2 = cbx_add_rn(r1, g1);
+    double r3 = cbx_add_rn(r2, g2);
+    /*@ assert r3lo: r3 >= (\abs(t) + g0 + g1 + g2) * (1 - 0x1p-51) - 0x1p-1072; */
+    /*@ assert r3hi: r3 <= (\abs(t) + g0 + g1 + g2) * (1 + 0x1p-51) + 0x1p-1072; */
+    double w = cbx_mul_rn(r3, 0x1.6p-51);
+    /*@ assert wlo: w >= 0x1.6p-51 * r3 * (1 - 0x1p-53) - 0x1p-1074; */
+    return cbx_add_rn(w, 0x1p-1067);
+}
+
+/* Lower bound of one output axis. */
+/*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
+    requires finb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+                   && \is_finite(l2) && \is_finite(h2);
+    requires dom: in_dom(m0, l0) && in_dom(m0, h0) && in_dom(m1, l1) && in_dom(m1, h1)
+                  && in_dom(m2, l2) && in_dom(m2, h2);
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures sound: \result <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures tight: lo_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+*/
+static double axis_lo(double m0, double m1, double m2, double t,
+                      double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    double d0 = term_lo(m0, l0, h0);
+    double d1 = term_lo(m1, l1, h1);
+    double d2 = term_lo(m2, l2, h2);
+    double g0 = term_mag(m0, l0, h0);
+    double g1 = term_mag(m1, l1, h1);
+    double g2 = term_mag(m2, l2, h2);
+    /*@ assert M: 0 <= tmag(m0, l0, h0) <= 0x1p1018 && 0 <= tmag(m1, l1, h1) <= 0x1p1018
+                  && 0 <= tmag(m2, l2, h2) <= 0x1p1018; */
+    /*@ assert X0: -(tmag(m0, l0, h0)) <= tmin(m0, l0, h0) <= tmag(m0, l0, h0); */
+    /*@ assert d0e: -(0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= d0 - tmin(m0, l0, h0) <= 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
+    /*@ assert X1: -(tmag(m1, l1, h1)) <= tmin(m1, l1, h1) <= tmag(m1, l1, h1); */
+    /*@ assert d1e: -(0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= d1 - tmin(m1, l1, h1) <= 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
+    /*@ assert X2: -(tmag(m2, l2, h2)) <= tmin(m2, l2, h2) <= tmag(m2, l2, h2); */
+    /*@ assert d2e: -(0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= d2 - tmin(m2, l2, h2) <= 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
+    double s1 = cbx_add_rn(t, d0);
+    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
+    /*@ assert r1: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074) <= s1 - (t + d0) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074; */
+    /*@ assert e1: -(0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074) <= s1 - (t + tmin(m0, l0, h0)) <= 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074; */
+    double s2 = cbx_add_rn(s1, d1);
+    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
+    /*@ assert r2: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074) <= s2 - (s1 + d1) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074; */
+    /*@ assert e2: -(0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074) <= s2 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1)) <= 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074; */
+    double s3 = cbx_add_rn(s2, d2);
+    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
+    /*@ assert r3: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + d2) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074; */
+    /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074) <= s3 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2)) <= 0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074; */
+    /*@ assert e3s: -(0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074) <= s3 - row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074; */
+    double w = widening(t, g0, g1, g2);
+    /*@ assert w1: w >= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - 0x1p-49)
+                        + 0x1p-1068 - 0x1p-1071; */
+    /*@ assert w2: w <= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + 0x1p-49)
+                        + 0x1p-1066 + 0x1p-1071; */
+    return cbx_sub_rn(s3, w);
+}
+
+/* Upper bound of one output axis (mirror of axis_lo). */
+/*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
+    requires finb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+                   && \is_finite(l2) && \is_finite(h2);
+    requires dom: in_dom(m0, l0) && in_dom(m0, h0) && in_dom(m1, l1) && in_dom(m1, h1)
+                  && in_dom(m2, l2) && in_dom(m2, h2);
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures sound: \result >= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures tight: hi_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+*/
+static double axis_hi(double m0, double m1, double m2, double t,
+                      double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    double d0 = term_hi(m0, l0, h0);
+    double d1 = term_hi(m1, l1, h1);
+    double d2 = term_hi(m2, l2, h2);
+    double g0 = term_mag(m0, l0, h0);
+    double g1 = term_mag(m1, l1, h1);
+    double g2 = term_mag(m2, l2, h2);
+    /*@ assert M: 0 <= tmag(m0, l0, h0) <= 0x1p1018 && 0 <= tmag(m1, l1, h1) <= 0x1p1018
+                  && 0 <= tmag(m2, l2, h2) <= 0x1p1018; */
+    /*@ assert X0: -(tmag(m0, l0, h0)) <= tmax(m0, l0, h0) <= tmag(m0, l0, h0); */
+    /*@ assert d0e: -(0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= d0 - tmax(m0, l0, h0) <= 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
+    /*@ assert X1: -(tmag(m1, l1, h1)) <= tmax(m1, l1, h1) <= tmag(m1, l1, h1); */
+    /*@ assert d1e: -(0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= d1 - tmax(m1, l1, h1) <= 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
+    /*@ assert X2: -(tmag(m2, l2, h2)) <= tmax(m2, l2, h2) <= tmag(m2, l2, h2); */
+    /*@ assert d2e: -(0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= d2 - tmax(m2, l2, h2) <= 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
+    double s1 = cbx_add_rn(t, d0);
+    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
+    /*@ assert r1: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074) <= s1 - (t + d0) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074; */
+    /*@ assert e1: -(0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074) <= s1 - (t + tmax(m0, l0, h0)) <= 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074; */
+    double s2 = cbx_add_rn(s1, d1);
+    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
+    /*@ assert r2: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074) <= s2 - (s1 + d1) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074; */
+    /*@ assert e2: -(0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074) <= s2 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1)) <= 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074; */
+    double s3 = cbx_add_rn(s2, d2);
+    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
+    /*@ assert r3: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + d2) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074; */
+    /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074) <= s3 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2)) <= 0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074; */
+    /*@ assert e3s: -(0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074) <= s3 - row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074; */
+    double w = widening(t, g0, g1, g2);
+    /*@ assert w1: w >= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - 0x1p-49)
+                        + 0x1p-1068 - 0x1p-1071; */
+    /*@ assert w2: w <= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + 0x1p-49)
+                        + 0x1p-1066 + 0x1p-1071; */
+    return cbx_add_rn(s3, w);
+}
+
+/* 1 if x is finite: comparisons with NaN and infinities are false. */
+/*@ assigns \nothing;
+    ensures \result != 0 <==> \is_finite(x);
+*/
+static inline int is_fin(double x) { return x >= -0x1.fffffffffffffp1023 && x <= 0x1.fffffffffffffp1023; }
+
+/* 1 when every input of one output row is finite and in the proven domain
+ * (specs: row_in_dom).  One early return per test keeps the proof linear. */
+/*@ assigns \nothing;
+    ensures ok: \result != 0 <==>
+      (\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+       && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+       && \is_finite(l2) && \is_finite(h2)
+       && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
+*/
+static int row_ok(double m0, double m1, double m2, double t,
+                  double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    if (!is_fin(m0)) return 0;
+    if (!is_fin(m1)) return 0;
+    if (!is_fin(m2)) return 0;
+    if (!is_fin(t)) return 0;
+    if (!is_fin(l0)) return 0;
+    if (!is_fin(h0)) return 0;
+    if (!is_fin(l1)) return 0;
+    if (!is_fin(h1)) return 0;
+    if (!is_fin(l2)) return 0;
+    if (!is_fin(h2)) return 0;
+    if (!(t >= -0x1p1018 && t <= 0x1p1018)) return 0;
+    if (!cbx_dom_pair(m0, l0)) return 0;
+    if (!cbx_dom_pair(m0, h0)) return 0;
+    if (!cbx_dom_pair(m1, l1)) return 0;
+    if (!cbx_dom_pair(m1, h1)) return 0;
+    if (!cbx_dom_pair(m2, l2)) return 0;
+    if (!cbx_dom_pair(m2, h2)) return 0;
+    return 1;
+}
+
+/* 1 if x is NaN (x != x holds only for NaN). */
+/*@ assigns \nothing;
+    ensures \result != 0 <==> \is_NaN(x);
+*/
+static inline int is_nan(double x) { return x != x; }
+
+/* 1 if hi < lo in IEEE comparison (the box is empty on that axis). */
+/*@ assigns \nothing;
+    ensures \result != 0 <==> \lt_double(hi, lo);
+*/
+static inline int is_inverted(double lo, double hi) { return hi < lo; }
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures whole_space(out);
+*/
+static void set_whole(cbx_box *out)
+{
+    out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
+    out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
+    out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
+}
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures empty_out(out);
+*/
+static void set_empty(cbx_box *out)
+{
+    out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
+    out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
+    out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
+}
+
+/* One output axis: the proven kernel inside the domain, the whole line
+ * [-inf, +inf] outside it. */
+typedef struct axis_result { double lo, hi; int ok; } axis_result;
+
+/*@ assigns \nothing;
+    ensures ok: \result.ok != 0 <==>
+      (\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+       && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+       && \is_finite(l2) && \is_finite(h2)
+       && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
+    ensures in: \result.ok != 0 ==>
+      \is_finite(\result.lo) && \is_finite(\result.hi)
+      && below8(\result.lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+      && above8(\result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+      && lo_tight(\result.lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+      && hi_tight(\result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures out: \result.ok == 0 ==>
+      \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
+*/
+static axis_result transform_axis(double m0, double m1, double m2, double t,
+                                  double l0, double h0, double l1, double h1,
+                                  double l2, double h2)
+{
+    axis_result r;
+    r.ok = row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    if (r.ok) {
+        r.lo = axis_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+        r.hi = axis_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    } else {
+        r.lo = cbx_ninf();
+        r.hi = cbx_pinf();
+    }
+    return r;
+}
+
+/* 1 if some input is NaN (specs: has_nan). */
+/*@ requires \valid_read(a) && \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> has_nan(a, in);
+*/
+static int any_nan(const cbx_affine *a, const cbx_box *in)
+{
+    if (is_nan(a->m[0][0]) || is_nan(a->m[0][1]) || is_nan(a->m[0][2]) || is_nan(a->m[0][3]))
+        return 1;
+    if (is_nan(a->m[1][0]) || is_nan(a->m[1][1]) || is_nan(a->m[1][2]) || is_nan(a->m[1][3]))
+        return 1;
+    if (is_nan(a->m[2][0]) || is_nan(a->m[2][1]) || is_nan(a->m[2][2]) || is_nan(a->m[2][3]))
+        return 1;
+    if (is_nan(in->lo[0]) || is_nan(in->lo[1]) || is_nan(in->lo[2]))
+        return 1;
+    if (is_nan(in->hi[0]) || is_nan(in->hi[1]) || is_nan(in->hi[2]))
+        return 1;
+    return 0;
+}
+
+/* 1 if hi < lo on some axis (specs: is_empty). */
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> is_empty(in);
+*/
+static int any_inverted(const cbx_box *in)
+{
+    return is_inverted(in->lo[0], in->hi[0]) || is_inverted(in->lo[1], in->hi[1])
+           || is_inverted(in->lo[2], in->hi[2]);
+}
+
+cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
+{
+    if (any_nan(a, in)) {
+        set_whole(out);
+        return CBX_EINVAL;
+    }
+    if (any_inverted(in)) {
+        set_empty(out);
+        return CBX_EMPTY;
+    }
+    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
+    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
+    axis_result r0 = transform_axis(a->m[0][0], a->m[0][1], a->m[0][2], a->m[0][3],
+                                    l0, h0, l1, h1, l2, h2);
+    axis_result r1 = transform_axis(a->m[1][0], a->m[1][1], a->m[1][2], a->m[1][3],
+                                    l0, h0, l1, h1, l2, h2);
+    axis_result r2 = transform_axis(a->m[2][0], a->m[2][1], a->m[2][2], a->m[2][3],
+                                    l0, h0, l1, h1, l2, h2);
+    out->lo[0] = r0.lo; out->hi[0] = r0.hi;
+    out->lo[1] = r1.lo; out->hi[1] = r1.hi;
+    out->lo[2] = r2.lo; out->hi[2] = r2.hi;
+    return (r0.ok && r1.ok && r2.ok) ? CBX_OK : CBX_ERANGE;
+}

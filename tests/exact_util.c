@@ -1,0 +1,599 @@
+/* exact_util: exact GMP oracle for the certbox tests (see exact_util.h). */
+#include "exact_util.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Same order as dom_pair in specs/cbx_spec.h; 509 is in the spec's list
+ * even though the comment in certbox.h only names 0, 64, ..., 960, 1018. */
+const int xu_class_k[XU_NCLASS] = {
+    509, 0, 64, 128, 192, 256, 320, 384, 448, 512,
+    576, 640, 704, 768, 832, 896, 960, 1018
+};
+
+const char *const xu_flag_name[XU_NFLAGS] = {
+    "status", "out-set", "special-out", "oob-axes", "finite",
+    "containment", "proven-tight", "corners", "cross-LH", "inputs"
+};
+
+/* ---------------------------------------------------------------------- */
+/* Domain and expected status                                             */
+/* ---------------------------------------------------------------------- */
+
+/* x != x is the portable NaN test; kept in one place so -ffast-math-like
+ * surprises would show up in one spot. */
+int xu_is_nan(double x) { return x != x; }
+
+int xu_has_nan(const cbx_affine *a, const cbx_box *in)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++)
+            if (xu_is_nan(a->m[i][j])) return 1;
+    for (j = 0; j < 3; j++)
+        if (xu_is_nan(in->lo[j]) || xu_is_nan(in->hi[j])) return 1;
+    return 0;
+}
+
+int xu_is_empty(const cbx_box *in)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        if (in->lo[j] > in->hi[j]) return 1;
+    return 0;
+}
+
+/* ldexp(1, k) for 0 <= k <= 1018 is an exact power of two, and comparing
+ * fabs(v) (exact) with it is an exact comparison; an infinity is never
+ * <= a finite bound, so non-finite inputs fall out by themselves. */
+int xu_pair_in_domain(double m, double c)
+{
+    int n;
+    double am = fabs(m), ac = fabs(c);
+    for (n = 0; n < XU_NCLASS; n++) {
+        int k = xu_class_k[n];
+        if (am <= ldexp(1.0, k) && ac <= ldexp(1.0, 1018 - k)) return 1;
+    }
+    return 0;
+}
+
+int xu_row_in_domain(const cbx_affine *a, const cbx_box *in, int i)
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        if (!xu_pair_in_domain(a->m[i][j], in->lo[j])) return 0;
+        if (!xu_pair_in_domain(a->m[i][j], in->hi[j])) return 0;
+    }
+    return fabs(a->m[i][3]) <= ldexp(1.0, 1018);
+}
+
+int xu_oob_mask(const cbx_affine *a, const cbx_box *in)
+{
+    int i, mask = 0;
+    for (i = 0; i < 3; i++)
+        if (!xu_row_in_domain(a, in, i)) mask |= 1 << i;
+    return mask;
+}
+
+cbx_status xu_expected_status(const cbx_affine *a, const cbx_box *in)
+{
+    if (xu_has_nan(a, in)) return CBX_EINVAL;
+    if (xu_is_empty(in)) return CBX_EMPTY;
+    return xu_oob_mask(a, in) ? CBX_ERANGE : CBX_OK;
+}
+
+/* ---------------------------------------------------------------------- */
+/* Fixed-point exact arithmetic                                           */
+/* ---------------------------------------------------------------------- */
+
+void xu_init(xu_exact *x)
+{
+    mpz_inits(x->L, x->H, x->S, x->pl, x->ph, x->t, x->d, x->e,
+              x->mm, x->mc, (mpz_ptr)0);
+    mpq_inits(x->q, x->qa, x->qb, x->qmin, x->qmax, (mpq_ptr)0);
+}
+
+void xu_clear(xu_exact *x)
+{
+    mpz_clears(x->L, x->H, x->S, x->pl, x->ph, x->t, x->d, x->e,
+               x->mm, x->mc, (mpz_ptr)0);
+    mpq_clears(x->q, x->qa, x->qb, x->qmin, x->qmax, (mpq_ptr)0);
+}
+
+/* v = z * 2^e with z an integer and e >= -1074 (v finite).  frexp gives
+ * |f| in [0.5, 1), so f*2^53 is an integer; for subnormals the exponent
+ * can drop below -1074, and then the low bits of the mantissa are zero,
+ * so shifting them out with ldexp is exact. */
+static long xu_split(mpz_t z, double v)
+{
+    int E;
+    double f, m;
+    long e;
+    if (v == 0.0) {
+        mpz_set_ui(z, 0);
+        return 0;
+    }
+    f = frexp(v, &E);
+    m = ldexp(f, 53);
+    e = (long)E - 53;
+    if (e < -1074) {
+        m = ldexp(m, (int)(e + 1074));
+        e = -1074;
+    }
+    mpz_set_d(z, m); /* exact: m is an integer below 2^53 */
+    return e;
+}
+
+void xu_scaled_d(xu_exact *x, mpz_t z, double v)
+{
+    long e = xu_split(x->mm, v);
+    mpz_mul_2exp(z, x->mm, (mp_bitcnt_t)(e + XU_SHIFT));
+}
+
+/* z = m * c * 2^XU_SHIFT; the exponent sum is >= -2148 = -XU_SHIFT. */
+static void xu_scaled_prod(xu_exact *x, mpz_t z, double m, double c)
+{
+    long em = xu_split(x->mm, m);
+    long ec = xu_split(x->mc, c);
+    mpz_mul(z, x->mm, x->mc);
+    mpz_mul_2exp(z, z, (mp_bitcnt_t)(em + ec + XU_SHIFT));
+}
+
+/* S += |v| */
+static void xu_add_abs(mpz_t S, const mpz_t v)
+{
+    if (mpz_sgn(v) >= 0) mpz_add(S, S, v);
+    else mpz_sub(S, S, v);
+}
+
+void xu_row_bounds(xu_exact *x, const cbx_affine *a, const cbx_box *in, int i)
+{
+    int j;
+    xu_scaled_d(x, x->L, a->m[i][3]);
+    mpz_set(x->H, x->L);
+    mpz_abs(x->S, x->L);
+    for (j = 0; j < 3; j++) {
+        xu_scaled_prod(x, x->pl, a->m[i][j], in->lo[j]);
+        xu_scaled_prod(x, x->ph, a->m[i][j], in->hi[j]);
+        /* min/max of the two products by exact comparison, not by the
+         * sign of m, so this does not depend on lo <= hi reasoning */
+        if (mpz_cmp(x->pl, x->ph) <= 0) {
+            mpz_add(x->L, x->L, x->pl);
+            mpz_add(x->H, x->H, x->ph);
+        } else {
+            mpz_add(x->L, x->L, x->ph);
+            mpz_add(x->H, x->H, x->pl);
+        }
+        /* |m| max(|lo|,|hi|) = max(|m lo|, |m hi|) */
+        xu_add_abs(x->S, mpz_cmpabs(x->pl, x->ph) >= 0 ? x->pl : x->ph);
+    }
+}
+
+int xu_cmp_scaled_d(xu_exact *x, const mpz_t v, double d)
+{
+    int c;
+    xu_scaled_d(x, x->t, d);
+    c = mpz_cmp(v, x->t);
+    return (c > 0) - (c < 0);
+}
+
+void xu_scaled_to_q(mpq_t q, const mpz_t v)
+{
+    mpq_set_z(q, v);
+    mpq_div_2exp(q, q, XU_SHIFT);
+}
+
+/* n * 2^53 / den as a double (den > 0); relative error a few ulps, which
+ * is plenty for statistics.  The exact decisions are made on mpz. */
+static double xu_ratio53(const mpz_t n, const mpz_t den)
+{
+    long en, ed;
+    double fn, fd;
+    if (mpz_sgn(n) == 0) return 0.0;
+    fn = mpz_get_d_2exp(&en, n);
+    fd = mpz_get_d_2exp(&ed, den);
+    return ldexp(fn / fd, (int)(en - ed + 53));
+}
+
+/* x->e = S + 2^1127, i.e. (u S + eta) * 2^(XU_SHIFT + 53). */
+static void xu_unit_den(xu_exact *x)
+{
+    mpz_set_ui(x->e, 1);
+    mpz_mul_2exp(x->e, x->e, XU_SHIFT - 1074 + 53);
+    mpz_add(x->e, x->e, x->S);
+}
+
+/* gap = exact distance by which the bound is outside the exact bound,
+ * scaled (negative = not contained).  Leaves it in x->d. */
+static void xu_gap_lo(xu_exact *x, double lo)
+{
+    xu_scaled_d(x, x->d, lo);
+    mpz_sub(x->d, x->L, x->d);
+}
+
+static void xu_gap_hi(xu_exact *x, double hi)
+{
+    xu_scaled_d(x, x->d, hi);
+    mpz_sub(x->d, x->d, x->H);
+}
+
+double xu_excess_lo(xu_exact *x, double lo)
+{
+    xu_gap_lo(x, lo);
+    xu_unit_den(x);
+    return xu_ratio53(x->d, x->e);
+}
+
+double xu_excess_hi(xu_exact *x, double hi)
+{
+    xu_gap_hi(x, hi);
+    xu_unit_den(x);
+    return xu_ratio53(x->d, x->e);
+}
+
+/* gap * 2^53 <= 12 S + 2^(XU_SHIFT - 1065 + 53), all scaled by
+ * 2^(XU_SHIFT + 53): exactly the spec's 0x1.8p-50 * S + 0x1p-1065. */
+static int xu_gap_within_proven(xu_exact *x)
+{
+    mpz_mul_2exp(x->t, x->d, 53);
+    mpz_set_ui(x->e, 1);
+    mpz_mul_2exp(x->e, x->e, XU_SHIFT - 1065 + 53);
+    mpz_addmul_ui(x->e, x->S, 12);
+    return mpz_cmp(x->t, x->e) <= 0;
+}
+
+int xu_lo_within_proven(xu_exact *x, double lo)
+{
+    xu_gap_lo(x, lo);
+    return xu_gap_within_proven(x);
+}
+
+int xu_hi_within_proven(xu_exact *x, double hi)
+{
+    xu_gap_hi(x, hi);
+    return xu_gap_within_proven(x);
+}
+
+/* ---------------------------------------------------------------------- */
+/* Independent mpq path: the 8 corners                                    */
+/* ---------------------------------------------------------------------- */
+
+void xu_corner_q(xu_exact *x, mpq_t r, const cbx_affine *a, const cbx_box *in,
+                 int i, unsigned c)
+{
+    int j;
+    mpq_set_d(r, a->m[i][3]);
+    for (j = 0; j < 3; j++) {
+        mpq_set_d(x->qa, a->m[i][j]);
+        mpq_set_d(x->qb, (c >> j) & 1u ? in->hi[j] : in->lo[j]);
+        mpq_mul(x->qa, x->qa, x->qb);
+        mpq_add(r, r, x->qa);
+    }
+}
+
+int xu_corner_failures(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                       int i, double lo, double hi)
+{
+    unsigned c;
+    int bad = 0;
+    mpq_set_d(x->qmin, lo);
+    mpq_set_d(x->qmax, hi);
+    for (c = 0; c < 8; c++) {
+        xu_corner_q(x, x->q, a, in, i, c);
+        if (mpq_cmp(x->qmin, x->q) > 0) bad++;
+        if (mpq_cmp(x->q, x->qmax) > 0) bad++;
+    }
+    return bad;
+}
+
+int xu_bounds_match_corners(xu_exact *x, const cbx_affine *a,
+                            const cbx_box *in, int i)
+{
+    unsigned c;
+    for (c = 0; c < 8; c++) {
+        xu_corner_q(x, x->q, a, in, i, c);
+        if (c == 0 || mpq_cmp(x->q, x->qmin) < 0) mpq_set(x->qmin, x->q);
+        if (c == 0 || mpq_cmp(x->q, x->qmax) > 0) mpq_set(x->qmax, x->q);
+    }
+    xu_scaled_to_q(x->qa, x->L);
+    xu_scaled_to_q(x->qb, x->H);
+    return mpq_equal(x->qa, x->qmin) && mpq_equal(x->qb, x->qmax);
+}
+
+/* ---------------------------------------------------------------------- */
+/* Checking one call                                                      */
+/* ---------------------------------------------------------------------- */
+
+static void xu_fail(xu_verdict *v, int flag, const char *why)
+{
+    v->flag[flag]++;
+    if (!v->failed) {
+        size_t n = sizeof v->why - 1;
+        strncpy(v->why, why, n);
+        v->why[n] = '\0';
+    }
+    v->failed = 1;
+}
+
+static int xu_is_pinf(double d) { return d > 0 && isinf(d); }
+static int xu_is_ninf(double d) { return d < 0 && isinf(d); }
+
+/* The whole output must be lo = L0, hi = H0 on every axis (EINVAL/EMPTY). */
+static void xu_check_special(xu_verdict *v, const cbx_box *out, int whole)
+{
+    int i;
+    v->applied[XU_F_SPECIAL]++;
+    for (i = 0; i < 3; i++) {
+        int ok = whole ? xu_is_ninf(out->lo[i]) && xu_is_pinf(out->hi[i])
+                       : xu_is_pinf(out->lo[i]) && xu_is_ninf(out->hi[i]);
+        if (!ok) {
+            xu_fail(v, XU_F_SPECIAL, whole ? "EINVAL: out is not [-inf,+inf]^3"
+                                           : "EMPTY: out is not lo=+inf hi=-inf");
+            return;
+        }
+    }
+}
+
+/* One in-domain axis: finite, contains [L, H] exactly, within the proven
+ * tightness, and (optionally) the mpq corner checks. */
+static void xu_check_axis(xu_exact *x, xu_verdict *v, const cbx_affine *a,
+                          const cbx_box *in, const cbx_box *out, int i,
+                          int corners)
+{
+    double lo = out->lo[i], hi = out->hi[i];
+    char why[160];
+    int glo, ghi;
+
+    v->applied[XU_F_FINITE]++;
+    if (!isfinite(lo) || !isfinite(hi) || lo > hi) {
+        snprintf(why, sizeof why, "axis %d in domain but out = [%.17g, %.17g]", i, lo, hi);
+        xu_fail(v, XU_F_FINITE, why);
+        return;
+    }
+    xu_row_bounds(x, a, in, i);
+    xu_unit_den(x);
+
+    v->applied[XU_F_CONTAIN]++;
+    v->applied[XU_F_PROVEN]++;
+    xu_gap_lo(x, lo);
+    glo = mpz_sgn(x->d);
+    v->ax[i].ex_lo = xu_ratio53(x->d, x->e);
+    if (!xu_gap_within_proven(x)) {
+        snprintf(why, sizeof why, "axis %d: lo beyond 12uS+2^-1065 (excess %.3g)", i,
+                v->ax[i].ex_lo);
+        xu_fail(v, XU_F_PROVEN, why);
+    }
+    xu_unit_den(x);
+    xu_gap_hi(x, hi);
+    ghi = mpz_sgn(x->d);
+    v->ax[i].ex_hi = xu_ratio53(x->d, x->e);
+    if (!xu_gap_within_proven(x)) {
+        snprintf(why, sizeof why, "axis %d: hi beyond 12uS+2^-1065 (excess %.3g)", i,
+                v->ax[i].ex_hi);
+        xu_fail(v, XU_F_PROVEN, why);
+    }
+    if (glo < 0 || ghi < 0) {
+        snprintf(why, sizeof why, "axis %d: not contained (excess lo %.3g, hi %.3g)", i,
+                v->ax[i].ex_lo, v->ax[i].ex_hi);
+        xu_fail(v, XU_F_CONTAIN, why);
+    }
+    v->ax[i].checked = 1;
+    v->ax[i].exact = glo == 0 && ghi == 0;
+    /* u S < 2^XU_TINY eta  <=>  S 2^XU_SHIFT < 2^(XU_SHIFT - 1074 + 53 + XU_TINY) */
+    v->ax[i].tiny = mpz_sizeinbase(x->S, 2) <= XU_SHIFT - 1074 + 53 + XU_TINY;
+
+    if (corners) {
+        v->applied[XU_F_CROSS]++;
+        if (!xu_bounds_match_corners(x, a, in, i)) {
+            snprintf(why, sizeof why, "axis %d: mpq corner min/max != fixed-point L/H", i);
+            xu_fail(v, XU_F_CROSS, why);
+        }
+        v->applied[XU_F_CORNER]++;
+        if (xu_corner_failures(x, a, in, i, lo, hi)) {
+            snprintf(why, sizeof why, "axis %d: a corner image is outside out (mpq)", i);
+            xu_fail(v, XU_F_CORNER, why);
+        }
+    }
+}
+
+static void xu_check_box_result(xu_exact *x, xu_verdict *v,
+                                const cbx_affine *a, const cbx_box *in,
+                                const cbx_box *out, int corners)
+{
+    int i;
+    char why[96];
+    v->oob_mask = xu_oob_mask(a, in);
+    for (i = 0; i < 3; i++) {
+        if (v->oob_mask & (1 << i)) {
+            v->applied[XU_F_OOB]++;
+            if (!xu_is_ninf(out->lo[i]) || !xu_is_pinf(out->hi[i])) {
+                snprintf(why, sizeof why, "axis %d out of domain but not [-inf,+inf]", i);
+                xu_fail(v, XU_F_OOB, why);
+            }
+        } else {
+            xu_check_axis(x, v, a, in, out, i, corners);
+        }
+    }
+}
+
+int xu_run_case(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                cbx_box *out, int corners, xu_verdict *v)
+{
+    cbx_affine a0 = *a;
+    cbx_box in0 = *in;
+    int i;
+    char why[96];
+
+    /* NaN pre-fill: any field the library forgets to write stays NaN */
+    for (i = 0; i < 3; i++) out->lo[i] = out->hi[i] = NAN;
+
+    memset(v, 0, sizeof *v);
+    v->got = cbx_transform_box(a, in, out);
+    v->expected = xu_expected_status(a, in);
+
+    v->applied[XU_F_INPUT]++;
+    if (memcmp(&a0, a, sizeof a0) != 0 || memcmp(&in0, in, sizeof in0) != 0)
+        xu_fail(v, XU_F_INPUT, "the call modified its inputs");
+
+    v->applied[XU_F_STATUS]++;
+    if (v->got != v->expected) {
+        snprintf(why, sizeof why, "status %s (%d), expected %s", cbx_status_name(v->got),
+                (int)v->got, cbx_status_name(v->expected));
+        xu_fail(v, XU_F_STATUS, why);
+    }
+    v->applied[XU_F_UNSET]++;
+    for (i = 0; i < 3; i++)
+        if (xu_is_nan(out->lo[i]) || xu_is_nan(out->hi[i])) {
+            xu_fail(v, XU_F_UNSET, "NaN left in out (field not written)");
+            break;
+        }
+
+    if (v->expected == CBX_EINVAL) xu_check_special(v, out, 1);
+    else if (v->expected == CBX_EMPTY) xu_check_special(v, out, 0);
+    else xu_check_box_result(x, v, a, in, out, corners);
+    return v->failed;
+}
+
+/* ---------------------------------------------------------------------- */
+/* Statistics                                                             */
+/* ---------------------------------------------------------------------- */
+
+static const double xu_bin_top[XU_NBINS - 1] = { 0, 0.5, 1, 2, 4, 6, 8, 12 };
+
+void xu_stats_init(xu_stats *s) { memset(s, 0, sizeof *s); }
+
+static void xu_stats_excess(xu_stats *s, double e)
+{
+    int b = 0;
+    while (b < XU_NBINS - 1 && !(e < xu_bin_top[b])) b++;
+    s->hist[b]++;
+    if (e > 8) s->over_target++;
+}
+
+/* max/mean split by scale (call before s->axes++). */
+static void xu_stats_scale(xu_stats *s, const xu_axis *ax, int i,
+                           const cbx_affine *a, const cbx_box *in)
+{
+    double m = ax->ex_lo > ax->ex_hi ? ax->ex_lo : ax->ex_hi;
+    long n_norm = s->axes - s->axes_tiny;
+    if (ax->tiny) {
+        if (s->axes_tiny == 0 || m > s->max_tiny) s->max_tiny = m;
+        s->sum_tiny += ax->ex_lo + ax->ex_hi;
+        s->axes_tiny++;
+    } else {
+        if (n_norm == 0 || m > s->max_norm) {
+            s->max_norm = m;
+            s->worst_a = *a;
+            s->worst_in = *in;
+            s->worst_axis = i;
+        }
+        s->sum_norm += ax->ex_lo + ax->ex_hi;
+        s->over_target_norm += (ax->ex_lo > 8) + (ax->ex_hi > 8);
+    }
+}
+
+void xu_stats_add(xu_stats *s, const xu_verdict *v, const cbx_affine *a,
+                  const cbx_box *in)
+{
+    int f, i, si = xu_status_index(v->expected);
+    s->cases++;
+    if (v->failed) s->failed++;
+    if (si >= 0) s->status_seen[si]++;
+    for (f = 0; f < XU_NFLAGS; f++) {
+        s->flag_fail[f] += v->flag[f];
+        s->flag_checked[f] += v->applied[f];
+    }
+    for (i = 0; i < 3; i++) {
+        const xu_axis *ax = &v->ax[i];
+        if (!ax->checked) continue;
+        if (s->axes == 0 || ax->ex_lo > s->max_lo) s->max_lo = ax->ex_lo;
+        if (s->axes == 0 || ax->ex_hi > s->max_hi) s->max_hi = ax->ex_hi;
+        s->sum_lo += ax->ex_lo;
+        s->sum_hi += ax->ex_hi;
+        xu_stats_scale(s, ax, i, a, in);
+        s->axes++;
+        s->axes_exact += ax->exact;
+        xu_stats_excess(s, ax->ex_lo);
+        xu_stats_excess(s, ax->ex_hi);
+    }
+}
+
+static const char *const xu_flag_unit[XU_NFLAGS] = {
+    "cases", "cases", "cases", "axes", "axes",
+    "axes", "axes", "axes", "axes", "cases"
+};
+
+void xu_stats_print(FILE *f, const char *title, const xu_stats *s)
+{
+    int k;
+    double n = s->axes ? (double)s->axes : 1.0;
+    double mx = s->max_lo > s->max_hi ? s->max_lo : s->max_hi;
+    fprintf(f, "== %s: %ld cases (expected OK %ld, EMPTY %ld, EINVAL %ld, "
+               "ERANGE %ld)\n", title, s->cases, s->status_seen[0],
+            s->status_seen[1], s->status_seen[2], s->status_seen[3]);
+    for (k = 0; k < XU_NFLAGS; k++)
+        fprintf(f, "  check %-12s %10ld %-5s checked, %6ld failed\n",
+                xu_flag_name[k], s->flag_checked[k], xu_flag_unit[k],
+                s->flag_fail[k]);
+    fprintf(f, "  in-domain axes checked: %ld (exactly equal to the exact "
+               "image: %ld)\n", s->axes, s->axes_exact);
+    if (s->axes == 0) return;
+    fprintf(f, "  excess lo: max %.4f  mean %.4f   (units of u*S + 2^-1074)\n",
+            s->max_lo, s->sum_lo / n);
+    fprintf(f, "  excess hi: max %.4f  mean %.4f\n", s->max_hi, s->sum_hi / n);
+    fprintf(f, "  excess   : max %.4f  mean %.4f   target <= 8: %s (%ld sides "
+               "above 8)\n", mx, (s->sum_lo + s->sum_hi) / (2 * n),
+            mx <= 8 ? "met" : "NOT met", s->over_target);
+    if (s->axes > s->axes_tiny)
+        fprintf(f, "  excess, axes with u*S >= 2^%d*eta: max %.4f  mean %.4f  "
+                   "(%ld axes, %ld sides above 8)\n", XU_TINY, s->max_norm,
+                s->sum_norm / (2.0 * (double)(s->axes - s->axes_tiny)),
+                s->axes - s->axes_tiny, s->over_target_norm);
+    if (s->axes_tiny)
+        fprintf(f, "  excess, axes with u*S <  2^%d*eta: max %.4f  mean %.4f  "
+                   "(%ld axes)\n", XU_TINY, s->max_tiny,
+                s->sum_tiny / (2.0 * (double)s->axes_tiny), s->axes_tiny);
+    fprintf(f, "  (the proven bound 12 u S + 2^-1065 is checked exactly as "
+               "proven-tight; 2^-1065 = 512 eta, so where u*S is tiny an "
+               "excess above 12 is allowed)\n");
+    fprintf(f, "  histogram (both sides):");
+    for (k = 0; k < XU_NBINS; k++) {
+        if (k == 0) fprintf(f, " <0:%ld", s->hist[k]);
+        else if (k == XU_NBINS - 1) fprintf(f, " >=12:%ld", s->hist[k]);
+        else fprintf(f, " [%g,%g):%ld", xu_bin_top[k - 1], xu_bin_top[k],
+                     s->hist[k]);
+    }
+    fprintf(f, "\n");
+}
+
+/* ---------------------------------------------------------------------- */
+/* Printing                                                               */
+/* ---------------------------------------------------------------------- */
+
+int xu_status_index(cbx_status s)
+{
+    switch (s) {
+    case CBX_OK: return 0;
+    case CBX_EMPTY: return 1;
+    case CBX_EINVAL: return 2;
+    case CBX_ERANGE: return 3;
+    }
+    return -1;
+}
+
+void xu_print_box(FILE *f, const char *label, const cbx_box *b)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        fprintf(f, "  %s[%d] = [%.17g, %.17g]  (%a, %a)\n", label, j,
+                b->lo[j], b->hi[j], b->lo[j], b->hi[j]);
+}
+
+void xu_print_case(FILE *f, const cbx_affine *a, const cbx_box *in)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        fprintf(f, "  m[%d] = {%a, %a, %a | %a}\n", i, a->m[i][0],
+                a->m[i][1], a->m[i][2], a->m[i][3]);
+    xu_print_box(f, "in", in);
+}

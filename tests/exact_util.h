@@ -1,0 +1,176 @@
+/*
+ * exact_util: the exact (GMP) oracle the certbox tests and the demo compare
+ * the library against.  Nothing here calls floating-point arithmetic that
+ * rounds: every real number is either a double taken as is, an mpz_t, or an
+ * mpq_t.
+ *
+ * Two independent exact paths are provided on purpose:
+ *   - a fast fixed-point path (mpz_t, every value scaled by 2^XU_SHIFT) for
+ *     L_i, H_i, S_i and the comparisons made on every case; a product of two
+ *     doubles is a multiple of 2^-2148, so after scaling every quantity is
+ *     an integer and no gcd (as in mpq_t) is ever needed;
+ *   - a plain mpq_t path (mpq_set_d, mpq_mul, mpq_add) for the 8 corners,
+ *     used on a subset of cases to check the containment without relying on
+ *     "L_i and H_i are the extreme corners", and to cross-check the
+ *     fixed-point L_i and H_i themselves.
+ *
+ * Units: excess = (L - out.lo) / (u S + eta)  and  (out.hi - H) / (u S + eta)
+ * with u = 2^-53, eta = 2^-1074.
+ */
+#ifndef EXACT_UTIL_H
+#define EXACT_UTIL_H
+
+#include <stdio.h>
+#include <gmp.h>
+#include "certbox.h"
+
+/* Every double is k * 2^-1074 (k integer), so a product of two is a
+ * multiple of 2^-2148: scaling by 2^2148 makes all of them integers. */
+#define XU_SHIFT 2148
+
+/* Axes with u S < 2^XU_TINY eta are reported apart: there the absolute
+ * part of any widening (the spec allows 2^-1065 = 2^9 eta) dominates the
+ * excess, which says nothing about the relative tightness. */
+#ifndef XU_TINY
+#define XU_TINY 10
+#endif
+
+/* The magnitude classes of the domain: |m| <= 2^k and |c| <= 2^(1018-k).
+ * Same list as dom_pair in specs/cbx_spec.h (509 first, then 0..960, 1018). */
+#define XU_NCLASS 18
+extern const int xu_class_k[XU_NCLASS];
+
+/* ---- the domain and the expected status, decided exactly ------------- */
+
+int xu_is_nan(double x);
+int xu_has_nan(const cbx_affine *a, const cbx_box *in);
+int xu_is_empty(const cbx_box *in);
+/* (m, c) lies in one magnitude class; false for non-finite m or c. */
+int xu_pair_in_domain(double m, double c);
+/* Row i of the output is in the proven domain (all 10 inputs it reads are
+ * finite, each (m[i][j], lo[j]) and (m[i][j], hi[j]) in a class, and
+ * |m[i][3]| <= 2^1018).  Meaningful only without NaN. */
+int xu_row_in_domain(const cbx_affine *a, const cbx_box *in, int i);
+/* Bit i set when row i is outside the domain. */
+int xu_oob_mask(const cbx_affine *a, const cbx_box *in);
+cbx_status xu_expected_status(const cbx_affine *a, const cbx_box *in);
+
+/* ---- exact bounds ----------------------------------------------------- */
+
+typedef struct xu_exact {
+    mpz_t L, H, S;          /* row bounds and scale, times 2^XU_SHIFT      */
+    mpz_t pl, ph, t, d, e;  /* scratch, initialised once (speed)           */
+    mpz_t mm, mc;           /* scratch: integer mantissas                  */
+    mpq_t q, qa, qb, qmin, qmax; /* scratch for the mpq corner path        */
+} xu_exact;
+
+void xu_init(xu_exact *x);
+void xu_clear(xu_exact *x);
+
+/* z = v * 2^XU_SHIFT, exactly; v finite. */
+void xu_scaled_d(xu_exact *x, mpz_t z, double v);
+/* Fill x->L, x->H, x->S for row i.  Every input of row i must be finite. */
+void xu_row_bounds(xu_exact *x, const cbx_affine *a, const cbx_box *in, int i);
+/* sign(v - d) for a scaled exact value v and a finite double d. */
+int xu_cmp_scaled_d(xu_exact *x, const mpz_t v, double d);
+/* Excess of out.lo / out.hi over the exact bound of the last
+ * xu_row_bounds(), in units of u S + eta; negative = not contained.
+ * lo, hi finite. */
+double xu_excess_lo(xu_exact *x, double lo);
+double xu_excess_hi(xu_exact *x, double hi);
+/* The proven tightness bound of specs/cbx_spec.h (lo_tight / hi_tight):
+ * lo >= L - (12 u S + 2^-1065), hi <= H + (12 u S + 2^-1065). */
+int xu_lo_within_proven(xu_exact *x, double lo);
+int xu_hi_within_proven(xu_exact *x, double hi);
+/* Convert a scaled value to a rational, exactly. */
+void xu_scaled_to_q(mpq_t q, const mpz_t v);
+
+/* Exact value of row i at corner c (bit j of c picks hi[j], else lo[j]),
+ * computed with mpq_t only. */
+void xu_corner_q(xu_exact *x, mpq_t r, const cbx_affine *a, const cbx_box *in,
+                 int i, unsigned c);
+/* Number of the 16 inequalities lo <= corner <= hi (8 corners) that fail,
+ * on the mpq path. */
+int xu_corner_failures(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                       int i, double lo, double hi);
+/* 1 if min/max over the 8 mpq corners equal the fixed-point L and H of the
+ * last xu_row_bounds() (call xu_row_bounds(x, a, in, i) first). */
+int xu_bounds_match_corners(xu_exact *x, const cbx_affine *a,
+                            const cbx_box *in, int i);
+
+/* ---- checking one call ------------------------------------------------ */
+
+/* The checks; v->flag[f] counts the failed items of check f (cases or
+ * axes, see xu_stats_print) and v->applied[f] the items it looked at. */
+enum {
+    XU_F_STATUS,     /* status differs from the exactly computed one       */
+    XU_F_UNSET,      /* a NaN (our pre-fill) is left in *out               */
+    XU_F_SPECIAL,    /* EINVAL / EMPTY output not exactly as specified     */
+    XU_F_OOB,        /* out-of-domain axis not exactly [-inf, +inf]        */
+    XU_F_FINITE,     /* in-domain axis not finite (or lo > hi)             */
+    XU_F_CONTAIN,    /* out.lo > L or out.hi < H (exact)                   */
+    XU_F_PROVEN,     /* beyond 12 u S + 2^-1065 (the proven tightness)     */
+    XU_F_CORNER,     /* mpq 8-corner check failed (subset)                 */
+    XU_F_CROSS,      /* mpq corners disagree with the fixed-point L/H      */
+    XU_F_INPUT,      /* *a or *in changed by the call                      */
+    XU_NFLAGS
+};
+extern const char *const xu_flag_name[XU_NFLAGS];
+
+typedef struct xu_axis {
+    int checked;        /* in-domain, finite output: excess is meaningful */
+    double ex_lo, ex_hi;
+    int exact;          /* out.lo == L and out.hi == H exactly            */
+    int tiny;           /* u S < 2^XU_TINY eta                            */
+} xu_axis;
+
+typedef struct xu_verdict {
+    cbx_status expected, got;
+    int oob_mask;
+    int flag[XU_NFLAGS];
+    int applied[XU_NFLAGS];
+    int failed;         /* any flag set                                    */
+    xu_axis ax[3];
+    char why[256];      /* first failure, for the log                      */
+} xu_verdict;
+
+/* Pre-fill *out with NaN, call cbx_transform_box, check everything.
+ * corners != 0 adds the mpq corner and cross checks.  Returns v->failed. */
+int xu_run_case(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                cbx_box *out, int corners, xu_verdict *v);
+
+/* ---- statistics ------------------------------------------------------- */
+
+#define XU_NBINS 9
+typedef struct xu_stats {
+    long cases, failed;
+    long flag_fail[XU_NFLAGS];
+    long flag_checked[XU_NFLAGS]; /* how many cases (axes for per-axis
+                                     checks) each check looked at         */
+    long status_seen[4];          /* OK, EMPTY, EINVAL, ERANGE expected    */
+    long axes;                    /* in-domain axes with an excess value   */
+    long axes_exact;
+    long over_target;             /* axis sides with excess > 8            */
+    double max_lo, max_hi, sum_lo, sum_hi;
+    /* the same split by scale: u S >= 2^XU_TINY eta ("normal") or not */
+    long axes_tiny, over_target_norm;
+    double max_norm, sum_norm, max_tiny, sum_tiny;
+    /* the input with the largest normal-scale excess, to reproduce it */
+    cbx_affine worst_a;
+    cbx_box worst_in;
+    int worst_axis;
+    long hist[XU_NBINS];          /* of both sides together                */
+} xu_stats;
+
+void xu_stats_init(xu_stats *s);
+void xu_stats_add(xu_stats *s, const xu_verdict *v, const cbx_affine *a,
+                  const cbx_box *in);
+void xu_stats_print(FILE *f, const char *title, const xu_stats *s);
+
+/* ---- printing --------------------------------------------------------- */
+
+int xu_status_index(cbx_status s);  /* 0..3, or -1 if not a known value */
+void xu_print_case(FILE *f, const cbx_affine *a, const cbx_box *in);
+void xu_print_box(FILE *f, const char *label, const cbx_box *b);
+
+#endif /* EXACT_UTIL_H */

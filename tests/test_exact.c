@@ -1,0 +1,593 @@
+/*
+ * test_exact [N] [seed]: cbx_transform_box against exact rational arithmetic.
+ *
+ * First a table of hand-picked hard cases, then N random cases (default
+ * 1000000) from a fixed-seed generator.  For every case: the status equals
+ * the one computed exactly from the spec, every field of *out is written,
+ * EINVAL / EMPTY outputs are exact, out-of-domain axes are exactly
+ * [-inf, +inf], in-domain axes are finite and contain the exact image
+ * (exact comparison with L_i and H_i), and stay within the proven bound
+ * 12 u S + 2^-1065.  Every 100th random case (and every table case) also
+ * checks the 8 corners with plain mpq_t arithmetic.  Excess statistics are
+ * printed; the last line is "N passed, M failed" (read by CI).
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <float.h>
+#include <math.h>
+#include <time.h>
+
+#include "certbox.h"
+#include "exact_util.h"
+
+#define MAX_FAIL_LOGS 20
+#ifndef CORNER_EVERY /* -DCORNER_EVERY=1 checks the corners on every case */
+#define CORNER_EVERY 100
+#endif
+
+/* ---------------------------------------------------------------------- */
+/* Hard cases                                                             */
+/* ---------------------------------------------------------------------- */
+
+typedef struct hard_case {
+    const char *name;
+    cbx_affine a;
+    cbx_box in;
+    cbx_status expect; /* written by hand from the spec                    */
+    int oob;           /* rows expected outside the domain (bit i = row i) */
+    int perm;          /* permutation / sign flip / small integers: the
+                          exact image box is representable in binary64   */
+} hard_case;
+
+/* A row is {m[i][0], m[i][1], m[i][2], t_i}; a box is given per axis as
+ * (lo0, hi0, lo1, hi1, lo2, hi2), which reads better than lo[] then hi[]. */
+#define ROW(a, b, c, t) { a, b, c, t }
+#define MAT(r0, r1, r2) { { r0, r1, r2 } }
+#define BOX(l0, h0, l1, h1, l2, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
+
+static const hard_case hard_cases[] = {
+    /* --- permutations and sign flips: exact image representable ------ */
+    /* identity on the unit cube */
+    { "identity, unit cube",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 1, 0)),
+      BOX(0, 1, 0, 1, 0, 1), CBX_OK, 0, 1 },
+    /* cyclic permutation with integer translation */
+    { "cyclic permutation + integer t",
+      MAT(ROW(0, 1, 0, 5), ROW(0, 0, 1, -7), ROW(1, 0, 0, 0)),
+      BOX(-1, 2, 3, 4, -6, -5), CBX_OK, 0, 1 },
+    /* sign flips, a degenerate (point) axis */
+    { "sign flips diag(-1,1,-1) + t",
+      MAT(ROW(-1, 0, 0, 1), ROW(0, 1, 0, 2), ROW(0, 0, -1, 3)),
+      BOX(-3, 5, 0, 0, 1, 2), CBX_OK, 0, 1 },
+    /* signed permutation with scales 2 and 3: image still dyadic */
+    { "signed permutation, scales 2,3",
+      MAT(ROW(0, -2, 0, 1), ROW(0, 0, 3, 0), ROW(-1, 0, 0, -4)),
+      BOX(1, 2, -5, 7, -0.5, 0.25), CBX_OK, 0, 1 },
+    /* permutation whose zeros are -0.0; box [0,-0] on axis 2 is NOT empty
+     * (+0 > -0 is false) */
+    { "permutation with -0.0 entries, box [+0,-0]",
+      MAT(ROW(-0.0, 1, -0.0, -0.0), ROW(-0.0, -0.0, -1, 0), ROW(1, -0.0, 0, -0.0)),
+      BOX(-0.0, 0.0, -2, -1, 0.0, -0.0), CBX_OK, 0, 1 },
+    /* swap with large but exact integers */
+    { "swap x0,x1 with 2^52-size integers",
+      MAT(ROW(0, 1, 0, -4503599627370496.0), ROW(1, 0, 0, 1), ROW(0, 0, -1, 0)),
+      BOX(-7, 9007199254740991.0, 4503599627370496.0, 4503599627370497.0, 3, 3),
+      CBX_OK, 0, 1 },
+
+    /* --- subnormals -------------------------------------------------- */
+    /* smallest subnormal everywhere: products are 2^-2148 */
+    { "2^-1074 entries, t and coords",
+      MAT(ROW(0x1p-1074, -0x1p-1074, 0x1p-1074, 0x1p-1074),
+          ROW(-0x1p-1074, -0x1p-1074, 0x1p-1074, -0x1p-1074),
+          ROW(0x1p-1074, 0x1p-1074, -0x1p-1074, 0)),
+      BOX(-0x1p-1074, 0x1p-1074, 0x1p-1074, 0x1p-1074, -0x1p-1074, 0),
+      CBX_OK, 0, 0 },
+    /* the smallest normal everywhere */
+    { "2^-1022 entries, t and coords",
+      MAT(ROW(0x1p-1022, -0x1p-1022, 0x1p-1022, -0x1p-1022),
+          ROW(-0x1p-1022, 0x1p-1022, 0x1p-1022, 0x1p-1022),
+          ROW(0x1p-1022, 0x1p-1022, 0x1p-1022, 0)),
+      BOX(-0x1p-1022, 0x1p-1022, 0x1p-1022, 0x1p-1022, -0x1p-1022, -0x1p-1022),
+      CBX_OK, 0, 0 },
+    /* subnormal coordinates with unit entries: 0.5 * 2^-1074 is not
+     * representable, so the eta term of the bound is what saves it */
+    { "subnormal coords, unit entries",
+      MAT(ROW(1, -1, 0, 0), ROW(0.5, 0, 0, 0), ROW(0, 0, 3, 0x1p-1074)),
+      BOX(0x1p-1074, 0x1p-1073, -0x1p-1074, 0, 0x1p-1022, 0x1p-1022),
+      CBX_OK, 0, 0 },
+    /* subnormal entries with the largest coordinates of class k = 0 */
+    { "subnormal entries, coords up to 2^1018",
+      MAT(ROW(0x1p-1074, 0x1.8p-1070, -0x1p-1060, 0),
+          ROW(-0x1.fffffffffffffp-1023, 0x1p-1074, 0x1p-1074, 0x1p-1074),
+          ROW(0x1p-1074, 0, 1, -1)),
+      BOX(-0x1p1018, 0x1p1018, 1e300, 1e300, -3, 5), CBX_OK, 0, 0 },
+
+    /* --- the largest magnitudes of the domain ------------------------ */
+    /* class k = 509 at its corner: only in the domain through k = 509 */
+    { "m = 2^509 with coords 2^509",
+      MAT(ROW(0x1p509, 0, 0, 0), ROW(-0x1p509, 0x1p509, 0, 0),
+          ROW(0x1p509, 0x1p509, 0x1p509, 0x1p1018)),
+      BOX(-0x1p509, 0x1p509, -0x1p509, 0x1p509, -0x1p509, 0x1p509),
+      CBX_OK, 0, 0 },
+    /* class k = 1018: m = 2^1018 with |c| <= 1 */
+    { "m = 2^1018 with coords 1",
+      MAT(ROW(0x1p1018, 0, 0, 0), ROW(0, -0x1p1018, 0, 0),
+          ROW(0x1p1018, 0, 0, -0x1p1018)),
+      BOX(-1, 1, 0.5, 1, -0x1p1018, 0x1p1018), CBX_OK, 0, 0 },
+    /* class k = 0: m = 1 with |c| <= 2^1018; row 0 reaches 2^1020 */
+    { "m = 1 with coords 2^1018",
+      MAT(ROW(1, 1, 1, 0x1p1018), ROW(1, -1, 0, 0), ROW(0, 0, -1, -0x1p1018)),
+      BOX(-0x1p1018, 0x1p1018, -0x1p1018, 0x1p1018, 0x1p1017, 0x1p1018),
+      CBX_OK, 0, 0 },
+    /* t = 2^1018 against negative terms of the same size; row 1 cancels
+     * to exactly 0 at the top of the range */
+    { "t = 2^1018 vs negative terms ~2^1018",
+      MAT(ROW(-0x1p1018, -0x1.fffffffffffffp1017, -0x1p1017, 0x1p1018),
+          ROW(-0x1p1018, 0, 0, 0x1p1018),
+          ROW(0x1p960, -0x1p960, 0x1p1018, -0x1p1018)),
+      BOX(1, 1, 0.75, 1, -1, 1), CBX_OK, 0, 0 },
+    /* every product and t at 2^1018 with the same sign: |y| = 2^1020 */
+    { "four 2^1018 terms of one sign",
+      MAT(ROW(0x1p1018, 0x1p1018, 0x1p1018, 0x1p1018),
+          ROW(-0x1p1018, -0x1p1018, -0x1p1018, -0x1p1018),
+          ROW(0x1.fffffffffffffp1017, -0x1.fffffffffffffp1017,
+              0x1.fffffffffffffp1017, -0x1p1018)),
+      BOX(1, 1, -1, -1, 0.5, 1), CBX_OK, 0, 0 },
+    /* mixed classes within one row: 1018, 509 and 0 */
+    { "classes 1018, 509, 0 in one row",
+      MAT(ROW(0x1p1018, 0x1p509, 1, 0x1p1018),
+          ROW(-1, 0x1p-1074, 0x1p-1074, -0x1p-1074),
+          ROW(0x1.5p1017, -0x1.3p508, -0x1.7p-1, 0)),
+      BOX(-1, 1, -0x1p509, 0x1p509, -0x1p1018, 0x1p1018), CBX_OK, 0, 0 },
+    /* class boundaries hit exactly: (2^64, 2^954) and (2^960, 2^58) */
+    { "class boundaries k = 64 and k = 960",
+      MAT(ROW(0x1p64, 0, 0, 0), ROW(0, 0x1p960, 0, 0), ROW(-0x1p64, -0x1p960, 1, 0)),
+      BOX(0x1p954, 0x1p954, -0x1p58, 0x1p58, 0, 1), CBX_OK, 0, 0 },
+
+    /* --- cancellation ------------------------------------------------ */
+    /* t = -(m x) exactly: image is exactly 0 */
+    { "exact cancellation to 0",
+      MAT(ROW(0.1, 0, 0, -0.1), ROW(3, -7, 0.5, 3.5), ROW(-1, 1, 1, -1)),
+      BOX(1, 1, 1, 1, 1, 1), CBX_OK, 0, 0 },
+    /* t = -fl(m x): the image is the (tiny) rounding error of the sum */
+    { "near cancellation t = -fl(m.x)",
+      MAT(ROW(0.1, 0.2, 0.3, -0.6000000000000001),
+          ROW(1e-3, 1.1, -0.7, -0.024499999999999966),
+          ROW(0.1, 0, 0, -0.10000000000000002)),
+      BOX(1, 1, 1, 1, 1, 1), CBX_OK, 0, 0 },
+    /* same at scale 1e200 (class 384) */
+    { "near cancellation at 1e200",
+      MAT(ROW(1e100, 3e99, -7e98, 8.9e199), ROW(1e100, 0, 0, -1e200),
+          ROW(-1e100, -3e99, 7e98, -8.9e199)),
+      BOX(1e100, 1e100, 7e99, 7e99, 3e101, 3e101), CBX_OK, 0, 0 },
+    /* cancellation against a non-point box */
+    { "near cancellation, interval box",
+      MAT(ROW(1e-3, 1.1, -0.7, -0.024499999999999966),
+          ROW(0.1, 0.2, 0.3, -0.6000000000000001), ROW(1, 1, 1, -3)),
+      BOX(1234.5, 1234.5000000000002, 0.3, 0.30000000000000004, 2.2, 2.2),
+      CBX_OK, 0, 0 },
+
+    /* --- signed zeros and point boxes -------------------------------- */
+    /* all zeros, all signs: the image is exactly 0 and S = 0 */
+    { "all zeros with signs",
+      MAT(ROW(-0.0, -0.0, -0.0, -0.0), ROW(0.0, -0.0, 0.0, 0.0),
+          ROW(-0.0, 0.0, -0.0, 0.0)),
+      BOX(-0.0, -0.0, -0.0, 0.0, 0.0, -0.0), CBX_OK, 0, 0 },
+    /* -0.0 coordinates with ordinary entries */
+    { "-0.0 coordinates",
+      MAT(ROW(2, -3, 0.5, 1), ROW(-0.0, 1e-3, -7, 0), ROW(1, 1, 1, -0.0)),
+      BOX(-0.0, -0.0, -0.0, 1, -2, -0.0), CBX_OK, 0, 0 },
+    /* point box with an inexact rotation-like matrix */
+    { "point box, decimal matrix",
+      MAT(ROW(0.36, -0.48, 0.8, 10), ROW(0.8, 0.6, 0, -3), ROW(-0.48, 0.64, 0.6, 0.5)),
+      BOX(0.3, 0.3, -1.7, -1.7, 2.5, 2.5), CBX_OK, 0, 0 },
+    /* point box at the largest coordinates of class k = 0 */
+    { "point box at 2^1018 / -1e306",
+      MAT(ROW(1, -1, 0.5, 0), ROW(0.75, 0.25, 0, -0x1p1018), ROW(-1, 0, 1, 1)),
+      BOX(0x1p1018, 0x1p1018, -1e306, -1e306, 1, 1), CBX_OK, 0, 0 },
+
+    /* --- tiny-angle rotations (cos(a) rounds to 1.0 for these a) ------ */
+    { "rotation 1e-8 about z",
+      MAT(ROW(1.0, -1e-8, 0, 0), ROW(1e-8, 1.0, 0, 0), ROW(0, 0, 1, 0)),
+      BOX(-1e6, 1e6, -1, 1, 0, 0), CBX_OK, 0, 0 },
+    { "rotation 1e-15 about x, translated",
+      MAT(ROW(1, 0, 0, 5), ROW(0, 1.0, -1e-15, -1e15), ROW(0, 1e-15, 1.0, 0.25)),
+      BOX(-1, 1, 1e15, 1e15, -1e15, 1e15), CBX_OK, 0, 0 },
+    { "rotation 1e-300 about y",
+      MAT(ROW(1.0, 0, 1e-300, 0), ROW(0, 1, 0, 0), ROW(-1e-300, 0, 1.0, 0)),
+      BOX(-1e300, 1e300, 1, 2, -1e-300, 1e-300), CBX_OK, 0, 0 },
+    /* cos = the double just below 1, sin = 2^-26 (exact pair) */
+    { "rotation with cos = 1 - 2^-53",
+      MAT(ROW(0x1.fffffffffffffp-1, -1.4901161193847656e-08, 0, 0),
+          ROW(1.4901161193847656e-08, 0x1.fffffffffffffp-1, 0, 0), ROW(0, 0, 1, 0)),
+      BOX(-1e10, 1e10, -1e10, 1e10, -1, 1), CBX_OK, 0, 0 },
+
+    /* --- 1e-300 next to 1e300 in one matrix --------------------------- */
+    /* 1e300 > 2^960, so its column needs class 1018: |x0|, |x2| <= 1 */
+    { "1e-300 next to 1e300",
+      MAT(ROW(1e300, 1e-300, 1, 0), ROW(-1e-300, 1, 1e300, -1e300),
+          ROW(0.5, 1e-300, -1e300, 1e-300)),
+      BOX(-1, 0.75, -1e300, 1e299, 0.125, 1), CBX_OK, 0, 0 },
+
+    /* --- outside the domain: CBX_ERANGE ------------------------------ */
+    /* 1e300 entries with coords up to 1e300 in every row */
+    { "1e300 matrix, 1e300 coords (all rows out)",
+      MAT(ROW(1e300, 0, 0, 0), ROW(-1e300, 1, 0, 0), ROW(1e300, 0, 1, 0)),
+      BOX(1, 1e300, 0, 1, 0, 1), CBX_ERANGE, 7, 0 },
+    /* only row 0 out; rows 1 and 2 must still be proven */
+    { "one row out, two proven",
+      MAT(ROW(1e300, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 2, 1)),
+      BOX(1, 1e300, -1, 1, 3, 4), CBX_ERANGE, 1, 0 },
+    /* |t| just above 2^1018 */
+    { "t = 2^1018 (1 + 2^-52)",
+      MAT(ROW(1, 0, 0, 0x1.0000000000001p1018), ROW(0, 1, 0, 0x1p1018),
+          ROW(0, 0, 1, -0x1p1018)),
+      BOX(0, 1, 0, 1, 0, 1), CBX_ERANGE, 1, 0 },
+    /* |m| just above 2^1018 even with coordinate 1 */
+    { "m = 2^1018 (1 + 2^-52), coord 1",
+      MAT(ROW(0x1p1018, 0, 0, 0), ROW(-0x1.0000000000001p1018, 0, 0, 0),
+          ROW(0, 0, 0, 0)),
+      BOX(1, 1, 0, 0, 0, 0), CBX_ERANGE, 2, 0 },
+    /* zero entries, coordinate just above 2^1018: outside every class,
+     * although each product is 0 */
+    { "zero column, coord 2^1018 (1 + 2^-52)",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(1, 1, 0, 0)),
+      BOX(0, 1, 0, 1, 0, 0x1.0000000000001p1018), CBX_ERANGE, 7, 0 },
+    /* m = 2^509 with c just above 2^509: neither class 509 nor 512 */
+    { "m = 2^509, coord 2^509 (1 + 2^-52)",
+      MAT(ROW(1, 0, 0, 0), ROW(-1, 1, 0, 0), ROW(0x1p509, 0, 0, 0)),
+      BOX(-0x1p509, 0x1.0000000000001p509, 0, 1, 0, 1), CBX_ERANGE, 4, 0 },
+    /* m just above 2^64 with c = 2^954 */
+    { "m = 2^64 (1 + 2^-52), coord 2^954",
+      MAT(ROW(0x1.0000000000001p64, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 1, 0)),
+      BOX(0x1p954, 0x1p954, 0, 1, 0, 1), CBX_ERANGE, 1, 0 },
+    /* the largest finite translation */
+    { "t = DBL_MAX",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 1, DBL_MAX)),
+      BOX(0, 1, 0, 1, 0, 1), CBX_ERANGE, 4, 0 },
+};
+
+#define N_HARD ((int)(sizeof hard_cases / sizeof hard_cases[0]))
+
+/* ---------------------------------------------------------------------- */
+/* PRNG: splitmix64 (all arithmetic on uint64_t, wraps by definition)      */
+/* ---------------------------------------------------------------------- */
+
+typedef struct rng { uint64_t s; } rng;
+
+static uint64_t rng_next(rng *r)
+{
+    uint64_t z = (r->s += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+/* uniform in [lo, hi]; the modulo bias (< 2^-50) does not matter here */
+static int rng_int(rng *r, int lo, int hi)
+{
+    uint64_t span = (uint64_t)((long)hi - (long)lo + 1);
+    return (int)((long)lo + (long)(rng_next(r) % span));
+}
+
+static double rng_sign(rng *r) { return (rng_next(r) >> 63) ? -1.0 : 1.0; }
+
+/* ---------------------------------------------------------------------- */
+/* Random doubles                                                         */
+/* ---------------------------------------------------------------------- */
+
+/* A magnitude in [0, 2^emax], exponent mostly in [emin, emax): zeros, the
+ * class boundary 2^emax itself, subnormals and full 53-bit mantissas. */
+static double gen_mag(rng *r, int emin, int emax)
+{
+    int p = rng_int(r, 0, 99), e;
+    double frac;
+    if (emin < -1074) emin = -1074;
+    if (emax > 1023) emax = 1023;
+    if (emax < emin) emax = emin;
+    if (p < 4) return 0.0;
+    if (p < 8) return ldexp(1.0, emax);
+    if (p < 12 && emin <= -1022 && emax >= -1022)
+        return ldexp((double)((rng_next(r) >> 12) | 1u), -1074); /* subnormal */
+    e = rng_int(r, emin - 1, emax - 1);
+    frac = 1.0 + ldexp((double)(rng_next(r) >> 12), -52);   /* [1, 2) exact */
+    return ldexp(frac, e); /* < 2^emax; rounds only when subnormal */
+}
+
+static double gen_signed(rng *r, int emin, int emax)
+{
+    return rng_sign(r) * gen_mag(r, emin, emax); /* 0 * -1 gives -0.0 */
+}
+
+/* Interval on axis j with |lo|, |hi| <= 2^chi. */
+static void gen_interval(rng *r, cbx_box *b, int j, int clo, int chi)
+{
+    int p = rng_int(r, 0, 99);
+    double u, v;
+    if (p < 10) { /* point box */
+        b->lo[j] = b->hi[j] = gen_signed(r, clo, chi);
+    } else if (p < 15) { /* signed zeros, any order: never empty */
+        b->lo[j] = rng_sign(r) * 0.0;
+        b->hi[j] = rng_sign(r) * 0.0;
+    } else if (p < 25) { /* symmetric */
+        u = gen_mag(r, clo, chi);
+        b->lo[j] = -u;
+        b->hi[j] = u;
+    } else if (p < 32) { /* one ulp wide */
+        u = gen_signed(r, clo, chi);
+        v = nextafter(u, HUGE_VAL);
+        if (fabs(v) > ldexp(1.0, chi)) v = u;
+        b->lo[j] = u;
+        b->hi[j] = v;
+    } else {
+        u = gen_signed(r, clo, chi);
+        v = gen_signed(r, clo, chi);
+        b->lo[j] = u < v ? u : v;
+        b->hi[j] = u < v ? v : u;
+    }
+}
+
+/* t = -fl(sum_j m_j c_j) at a random corner: the image nearly cancels. */
+static double cancelling_t(rng *r, const cbx_affine *a, const cbx_box *b, int i)
+{
+    double s = 0.0;
+    int j;
+    for (j = 0; j < 3; j++)
+        s += a->m[i][j] * ((rng_next(r) >> 63) ? b->hi[j] : b->lo[j]);
+    return -s;
+}
+
+/* A case inside the domain by construction: per column a magnitude class
+ * k, entries within 2^k and coordinates within 2^(1018-k).  In "narrow"
+ * mode all products share an exponent P (so terms are comparable and
+ * cancellation happens); otherwise exponents are spread over the class. */
+static void gen_in_domain(rng *r, cbx_affine *a, cbx_box *b)
+{
+    int narrow = rng_int(r, 0, 1);
+    int P = rng_int(r, -1070, 1016);
+    int i, j;
+    for (j = 0; j < 3; j++) {
+        int k = xu_class_k[rng_int(r, 0, XU_NCLASS - 1)];
+        int mlo = -1074, mhi = k, clo = -1074, chi = 1018 - k;
+        if (narrow) {
+            int lo = P - 1018 + k > -1074 ? P - 1018 + k : -1074;
+            int hi = k < P + 1074 ? k : P + 1074;
+            int am = rng_int(r, lo, hi);
+            mhi = am;
+            mlo = am - 4;
+            chi = P - am;
+            clo = chi - 4;
+        }
+        for (i = 0; i < 3; i++) a->m[i][j] = gen_signed(r, mlo, mhi);
+        gen_interval(r, b, j, clo, chi);
+    }
+    for (i = 0; i < 3; i++) {
+        int p = rng_int(r, 0, 9);
+        if (p < 2) a->m[i][3] = cancelling_t(r, a, b, i);
+        else if (p < 3) a->m[i][3] = rng_sign(r) * 0.0;
+        else if (narrow) a->m[i][3] = gen_signed(r, P - 4, P);
+        else a->m[i][3] = gen_signed(r, -1074, 1018);
+    }
+}
+
+/* Push one input out of (or to the edge of) the domain. */
+static void perturb_out(rng *r, cbx_affine *a, cbx_box *b)
+{
+    int i = rng_int(r, 0, 2), j = rng_int(r, 0, 2), k;
+    double big;
+    switch (rng_int(r, 0, 6)) {
+    case 0: /* large entry: may or may not still fit a class */
+        a->m[i][j] = gen_signed(r, 200, 1023);
+        break;
+    case 1: /* large coordinate */
+        big = gen_mag(r, 900, 1023);
+        if (rng_int(r, 0, 1)) { if (big > b->lo[j]) b->hi[j] = big; }
+        else if (-big < b->hi[j]) b->lo[j] = -big;
+        break;
+    case 2: /* infinite coordinate(s) */
+        switch (rng_int(r, 0, 3)) {
+        case 0: b->lo[j] = -HUGE_VAL; break;
+        case 1: b->hi[j] = HUGE_VAL; break;
+        case 2: b->lo[j] = b->hi[j] = HUGE_VAL; break;
+        default: b->lo[j] = -HUGE_VAL; b->hi[j] = HUGE_VAL; break;
+        }
+        break;
+    case 3: /* infinite entry or translation */
+        a->m[i][rng_int(r, 0, 3)] = rng_sign(r) * HUGE_VAL;
+        break;
+    case 4: /* translation beyond 2^1018 */
+        k = rng_int(r, 0, 2);
+        big = k == 0 ? nextafter(ldexp(1.0, 1018), HUGE_VAL)
+            : k == 1 ? DBL_MAX : gen_mag(r, 1019, 1023);
+        a->m[i][3] = rng_sign(r) * big;
+        break;
+    case 5: /* one ulp outward on an entry: crosses a class boundary when
+               the entry sat on it */
+        a->m[i][j] = nextafter(a->m[i][j], a->m[i][j] < 0 ? -HUGE_VAL : HUGE_VAL);
+        break;
+    default: /* exact class corner, then one coordinate one ulp beyond */
+        k = xu_class_k[rng_int(r, 0, XU_NCLASS - 1)];
+        a->m[i][j] = rng_sign(r) * ldexp(1.0, k);
+        b->lo[j] = -ldexp(1.0, 1018 - k);
+        b->hi[j] = ldexp(1.0, 1018 - k);
+        if (rng_int(r, 0, 1)) b->hi[j] = nextafter(b->hi[j], HUGE_VAL);
+        break;
+    }
+}
+
+static void inject_nan(rng *r, cbx_affine *a, cbx_box *b)
+{
+    int p = rng_int(r, 0, 17);
+    double nan = rng_sign(r) * NAN;
+    if (p < 12) a->m[p / 4][p % 4] = nan;
+    else if (p < 15) b->lo[p - 12] = nan;
+    else b->hi[p - 15] = nan;
+}
+
+static void inject_empty(rng *r, cbx_box *b)
+{
+    int j = rng_int(r, 0, 2);
+    switch (rng_int(r, 0, 2)) {
+    case 0: /* one ulp inverted */
+        b->lo[j] = nextafter(b->hi[j], HUGE_VAL);
+        break;
+    case 1: /* inverted infinities */
+        b->lo[j] = HUGE_VAL;
+        b->hi[j] = -HUGE_VAL;
+        break;
+    default: /* swapped ends, made distinct */
+        b->lo[j] = 1.0;
+        b->hi[j] = -1.0;
+        break;
+    }
+}
+
+/* ~87% in domain by construction, ~10% pushed out, ~1.5% NaN, ~1.5% empty
+ * (some of those also NaN: EINVAL must win). */
+static void gen_case(rng *r, cbx_affine *a, cbx_box *b)
+{
+    int p = rng_int(r, 0, 999);
+    gen_in_domain(r, a, b);
+    if (p < 100) perturb_out(r, a, b);
+    else if (p < 115) inject_nan(r, a, b);
+    else if (p < 130) {
+        inject_empty(r, b);
+        if (p < 118) inject_nan(r, a, b);
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* Driver                                                                 */
+/* ---------------------------------------------------------------------- */
+
+static long fail_logs;
+
+static void log_failure(const char *what, long id, const cbx_affine *a,
+                        const cbx_box *in, const cbx_box *out,
+                        const xu_verdict *v)
+{
+    if (fail_logs++ >= MAX_FAIL_LOGS) return;
+    printf("FAIL %s %ld: %s (status %s, expected %s)\n", what, id, v->why,
+           cbx_status_name(v->got), cbx_status_name(v->expected));
+    xu_print_case(stdout, a, in);
+    xu_print_box(stdout, "out", out);
+}
+
+/* The table is also a test of the oracle: a hand-written status or domain
+ * mask that disagrees with xu_expected_status / xu_oob_mask fails. */
+static void run_hard(xu_exact *x, xu_stats *st, xu_stats *all, long *perm_n,
+                     long *perm_exact)
+{
+    int n, i;
+    printf("-- hard cases (%d) --\n", N_HARD);
+    for (n = 0; n < N_HARD; n++) {
+        const hard_case *h = &hard_cases[n];
+        cbx_box out;
+        xu_verdict v;
+        int table_ok, exact = 1;
+        double mx = 0;
+        xu_run_case(x, &h->a, &h->in, &out, 1, &v);
+        table_ok = xu_expected_status(&h->a, &h->in) == h->expect
+                   && xu_oob_mask(&h->a, &h->in) == h->oob;
+        if (!table_ok) {
+            if (!v.failed)
+                snprintf(v.why, sizeof v.why, "table says %s/oob %d, oracle %s/oob %d",
+                        cbx_status_name(h->expect), h->oob,
+                        cbx_status_name(v.expected), xu_oob_mask(&h->a, &h->in));
+            v.failed = 1;
+        }
+        xu_stats_add(st, &v, &h->a, &h->in);
+        xu_stats_add(all, &v, &h->a, &h->in);
+        for (i = 0; i < 3; i++) {
+            if (!v.ax[i].checked) { exact = 0; continue; }
+            exact &= v.ax[i].exact;
+            if (v.ax[i].ex_lo > mx) mx = v.ax[i].ex_lo;
+            if (v.ax[i].ex_hi > mx) mx = v.ax[i].ex_hi;
+        }
+        if (h->perm) {
+            (*perm_n)++;
+            *perm_exact += exact;
+        }
+        printf("  %-44s %-10s max excess %7.3f%s  %s\n", h->name,
+               cbx_status_name(v.got), mx, h->perm && exact ? " (exact box)" : "",
+               v.failed ? "FAIL" : "ok");
+        if (v.failed) log_failure("hard", n, &h->a, &h->in, &out, &v);
+    }
+}
+
+static void run_random(xu_exact *x, xu_stats *st, xu_stats *all, long n,
+                       uint64_t seed)
+{
+    rng r;
+    long c;
+    r.s = seed;
+    for (c = 0; c < n; c++) {
+        cbx_affine a;
+        cbx_box in, out;
+        xu_verdict v;
+        int corners = c % CORNER_EVERY == 0;
+        gen_case(&r, &a, &in);
+        if (xu_run_case(x, &a, &in, &out, corners, &v))
+            log_failure("random", c, &a, &in, &out, &v);
+        xu_stats_add(st, &v, &a, &in);
+        xu_stats_add(all, &v, &a, &in);
+    }
+}
+
+/* Parse argv[k] as a number, or exit with a usage message (a typo must
+ * not silently run 0 cases). */
+static unsigned long long arg_num(int argc, char **argv, int k,
+                                  unsigned long long dflt)
+{
+    char *end;
+    unsigned long long v;
+    if (argc <= k) return dflt;
+    v = strtoull(argv[k], &end, 0);
+    if (*argv[k] == '\0' || *argv[k] == '-' || *end != '\0') {
+        fprintf(stderr, "usage: %s [N] [seed]\n", argv[0]);
+        exit(2);
+    }
+    return v;
+}
+
+int main(int argc, char **argv)
+{
+    long n = (long)arg_num(argc, argv, 1, 1000000ULL);
+    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 0x5eed0fce27b0c5ULL);
+    xu_exact x;
+    xu_stats hard, rnd, all;
+    long perm_n = 0, perm_exact = 0, passed, failed;
+    clock_t t0 = clock();
+
+    if (n < 0) n = 0;
+    xu_init(&x);
+    xu_stats_init(&hard);
+    xu_stats_init(&rnd);
+    xu_stats_init(&all);
+
+    run_hard(&x, &hard, &all, &perm_n, &perm_exact);
+    run_random(&x, &rnd, &all, n, seed);
+
+    xu_stats_print(stdout, "hard cases", &hard);
+    printf("  permutation/sign-flip cases: %ld, output exactly equal to the "
+           "exact box: %ld (not required: the library widens)\n",
+           perm_n, perm_exact);
+    printf("\n");
+    xu_stats_print(stdout, "random cases", &rnd);
+    if (rnd.axes > rnd.axes_tiny) {
+        printf("  largest normal-scale excess: axis %d of\n", rnd.worst_axis);
+        xu_print_case(stdout, &rnd.worst_a, &rnd.worst_in);
+    }
+    printf("  seed 0x%llx, corner checks on every %d-th case\n",
+           (unsigned long long)seed, CORNER_EVERY);
+    printf("  CPU time %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
+    printf("\n");
+    xu_stats_print(stdout, "totals (hard + random)", &all);
+
+    xu_clear(&x);
+    failed = all.failed;
+    passed = all.cases - failed;
+    printf("%ld passed, %ld failed\n", passed, failed);
+    return failed ? 1 : 0;
+}
