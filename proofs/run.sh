@@ -15,12 +15,12 @@ conf=$(sh proofs/setup.sh $out)
 export WHY3CONFIG="$conf"
 SRC="src/cbx_interval.c src/cbx_status.c"
 FC="frama-c -cpp-extra-args=-I$root/src -cpp-extra-args=-I$root/specs"
-WP="-wp -wp-rte -wp-prover cvc4r,z3r -wp-timeout ${CBX_WP_TIMEOUT:-30} -wp-par ${CBX_WP_PAR:-2} -wp-cache none"
+WP="-wp -wp-rte -wp-prover cvc4r,z3r -wp-timeout ${CBX_WP_TIMEOUT:-120} -wp-par ${CBX_WP_PAR:-2} -wp-cache none"
 # Pass A: rounding primitives and kernels, with -wp-split (their assertions
 # are two-sided bounds; one goal per side proves fastest).
 # Pass B: everything else (lemmas, domain checks, public functions) without
 # -wp-split (splitting the behaviors' postconditions multiplies goals).
-KERNELS=cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,term_lo,term_hi,term_mag,widening,axis_lo,axis_hi
+KERNELS=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,term_lo,term_hi,term_mag,widening,axis_lo,axis_hi
 echo "proof: pass A, primitives and kernels"
 start=$(date +%s)
 # shellcheck disable=SC2086

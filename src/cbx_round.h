@@ -83,32 +83,42 @@ static inline double cbx_min2(double x, double y) { return x < y ? x : y; }
 */
 static inline double cbx_max2(double x, double y) { return x < y ? y : x; }
 
-/* Run-time check of one product's domain class (specs: dom_pair). */
+/* One magnitude class: |m| <= bm and |c| <= bc (specs: cls). */
+/*@ requires fin: \is_finite(m) && \is_finite(c) && \is_finite(bm) && \is_finite(bc);
+    assigns \nothing;
+    ensures val: \result != 0 <==> cls(m, c, bm, bc);
+*/
+static inline int cbx_cls(double m, double c, double bm, double bc)
+{
+    return m >= -bm && m <= bm && c >= -bc && c <= bc;
+}
+
+/* Run-time check of one product's domain class (specs: dom_pair).
+ * The common class (both factors at most 2^509) comes first. */
 /*@ requires fin: \is_finite(m) && \is_finite(c);
     assigns \nothing;
     ensures val: \result != 0 <==> dom_pair(m, c);
 */
 static inline int cbx_dom_pair(double m, double c)
 {
-    /* the common class first: both factors at most 2^509 */
-    if (m >= -0x1p509 && m <= 0x1p509 && c >= -0x1p509 && c <= 0x1p509) return 1;
-    if (m >= -0x1p0 && m <= 0x1p0 && c >= -0x1p1018 && c <= 0x1p1018) return 1;
-    if (m >= -0x1p64 && m <= 0x1p64 && c >= -0x1p954 && c <= 0x1p954) return 1;
-    if (m >= -0x1p128 && m <= 0x1p128 && c >= -0x1p890 && c <= 0x1p890) return 1;
-    if (m >= -0x1p192 && m <= 0x1p192 && c >= -0x1p826 && c <= 0x1p826) return 1;
-    if (m >= -0x1p256 && m <= 0x1p256 && c >= -0x1p762 && c <= 0x1p762) return 1;
-    if (m >= -0x1p320 && m <= 0x1p320 && c >= -0x1p698 && c <= 0x1p698) return 1;
-    if (m >= -0x1p384 && m <= 0x1p384 && c >= -0x1p634 && c <= 0x1p634) return 1;
-    if (m >= -0x1p448 && m <= 0x1p448 && c >= -0x1p570 && c <= 0x1p570) return 1;
-    if (m >= -0x1p512 && m <= 0x1p512 && c >= -0x1p506 && c <= 0x1p506) return 1;
-    if (m >= -0x1p576 && m <= 0x1p576 && c >= -0x1p442 && c <= 0x1p442) return 1;
-    if (m >= -0x1p640 && m <= 0x1p640 && c >= -0x1p378 && c <= 0x1p378) return 1;
-    if (m >= -0x1p704 && m <= 0x1p704 && c >= -0x1p314 && c <= 0x1p314) return 1;
-    if (m >= -0x1p768 && m <= 0x1p768 && c >= -0x1p250 && c <= 0x1p250) return 1;
-    if (m >= -0x1p832 && m <= 0x1p832 && c >= -0x1p186 && c <= 0x1p186) return 1;
-    if (m >= -0x1p896 && m <= 0x1p896 && c >= -0x1p122 && c <= 0x1p122) return 1;
-    if (m >= -0x1p960 && m <= 0x1p960 && c >= -0x1p58 && c <= 0x1p58) return 1;
-    if (m >= -0x1p1018 && m <= 0x1p1018 && c >= -0x1p0 && c <= 0x1p0) return 1;
+    if (cbx_cls(m, c, 0x1p509, 0x1p509)) return 1;
+    if (cbx_cls(m, c, 0x1p0, 0x1p1018)) return 1;
+    if (cbx_cls(m, c, 0x1p64, 0x1p954)) return 1;
+    if (cbx_cls(m, c, 0x1p128, 0x1p890)) return 1;
+    if (cbx_cls(m, c, 0x1p192, 0x1p826)) return 1;
+    if (cbx_cls(m, c, 0x1p256, 0x1p762)) return 1;
+    if (cbx_cls(m, c, 0x1p320, 0x1p698)) return 1;
+    if (cbx_cls(m, c, 0x1p384, 0x1p634)) return 1;
+    if (cbx_cls(m, c, 0x1p448, 0x1p570)) return 1;
+    if (cbx_cls(m, c, 0x1p512, 0x1p506)) return 1;
+    if (cbx_cls(m, c, 0x1p576, 0x1p442)) return 1;
+    if (cbx_cls(m, c, 0x1p640, 0x1p378)) return 1;
+    if (cbx_cls(m, c, 0x1p704, 0x1p314)) return 1;
+    if (cbx_cls(m, c, 0x1p768, 0x1p250)) return 1;
+    if (cbx_cls(m, c, 0x1p832, 0x1p186)) return 1;
+    if (cbx_cls(m, c, 0x1p896, 0x1p122)) return 1;
+    if (cbx_cls(m, c, 0x1p960, 0x1p58)) return 1;
+    if (cbx_cls(m, c, 0x1p1018, 0x1p0)) return 1;
     return 0;
 }
 

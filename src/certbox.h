@@ -13,7 +13,7 @@
  * Proven domain (see README.md, "Domain"): every input is finite and, for
  * every row i and column j, the pair (m[i][j], c) with c = lo[j] and
  * c = hi[j] lies in one of the magnitude classes
- *       |m[i][j]| <= 2^k  and  |c| <= 2^(1018-k),  k in {0,64,...,960,1018}
+ *       |m[i][j]| <= 2^k  and  |c| <= 2^(1018-k),  k in {0,64,...,960,509,1018}
  * (so |m[i][j]*c| <= 2^1018), and |m[i][3]| <= 2^1018.  Inside the domain
  * an axis is computed by the proven kernel; outside it the axis is set to
  * [-inf, +inf] and the status is CBX_ERANGE.
