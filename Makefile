@@ -23,8 +23,8 @@ ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Isrc
 SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 B := build
-LIBSRC  := src/cbx_interval.c src/cbx_status.c
-HEADERS := src/certbox.h src/cbx_round.h specs/cbx_spec.h
+LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c
+HEADERS := src/certbox.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h specs/cbx_spec.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)
@@ -55,26 +55,30 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 # ---- tests ---------------------------------------------------------------
 TESTUTIL := tests/exact_util.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
-	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lgmp -lm -o $@
+	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
-	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lgmp -lm -o $@
+	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 
 demo: check-deps-test
 	$(MAKE) $(B)/demo
 	./$(B)/demo
 
-TESTS := exact badinput
+TESTS := exact badinput cbox sphere
 test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_badinput
 	./$(B)/test_exact 1000000 1
+	./$(B)/test_cbox 300000 1
+	./$(B)/test_sphere 200000 1
 
 # Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
 test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_badinput
 	./$(B)/san/test_exact 200000 2
+	./$(B)/san/test_cbox 100000 2
+	./$(B)/san/test_sphere 30000 2
 
 # The public header compiles as C99, C11 and C++.
 header-check:
@@ -106,7 +110,7 @@ check: check-deps
 	$(MAKE) test-san
 	$(MAKE) install-check
 	$(MAKE) proof-check
-	@echo "check: 7 passed, 0 failed"
+	@echo "check: 9 passed, 0 failed"
 
 # make install into a scratch DESTDIR, then build a program against it
 # with pkg-config, static and shared.

@@ -9,6 +9,11 @@
  * many "unit roundoffs of the row's scale" the library gave away.  The
  * library proves a gap of at most 12 u S + 2^-1065; "contains" is checked
  * exactly, on the exact bounds and on the 8 corners of the input box.
+ *
+ * Two more sections: a sphere (cbx_sphere_box, exact bounds t -+ sqrt(s)
+ * per axis) next to Arvo's box of the sphere's own box [-1, 1]^3 under the
+ * same map, with their volume ratio; and the centre/half-diagonal form
+ * (cbx_box_to_cbox, cbx_transform_cbox, cbx_cbox_to_box).
  */
 #include <stdio.h>
 #include <math.h>
@@ -161,6 +166,140 @@ static void show(xu_exact *x, int n, const sample *s)
     printf("\n");
 }
 
+/* ---- sphere: exact bounds vs Arvo's box of [-1, 1]^3 ------------------ */
+
+/* gap of an end beyond t -+ sqrt(s / 2^2148), in units of
+ * u (|t| + sqrt(s')) + 2^-1074, evaluated with 320-bit mpf (display only;
+ * containment itself is decided exactly by xu_sqrt_lo_ok / xu_sqrt_hi_ok) */
+static double sphere_units(const mpz_t s, double t, double end, int upper)
+{
+    mpf_t r, e, d, g;
+    double u;
+    mpf_inits(r, e, d, g, (mpf_ptr)0);
+    mpf_set_prec(r, 320); mpf_set_prec(e, 320);
+    mpf_set_prec(d, 320); mpf_set_prec(g, 320);
+    mpf_set_z(r, s);
+    mpf_div_2exp(r, r, 2148);
+    mpf_sqrt(r, r);                      /* sqrt(s') */
+    mpf_set_d(e, t);
+    if (upper) mpf_add(e, e, r); else mpf_sub(e, e, r); /* exact end */
+    mpf_set_d(g, end);
+    if (upper) mpf_sub(g, g, e); else mpf_sub(g, e, g);  /* gap */
+    mpf_set_d(d, fabs(t));
+    mpf_add(d, d, r);
+    mpf_div_2exp(d, d, 53);
+    mpf_set_d(r, 0x1p-1074);
+    mpf_add(d, d, r);
+    mpf_div(g, g, d);
+    u = mpf_get_d(g);
+    mpf_clears(r, e, d, g, (mpf_ptr)0);
+    return u;
+}
+
+static void show_sphere(xu_exact *x, int n)
+{
+    const double d30 = atan(1.0) / 1.5, d45 = atan(1.0);
+    const double c = cos(d30), s = sin(d30), a = cos(d45), b = sin(d45);
+    const double rad = 2.0;
+    cbx_affine m;
+    cbx_box cube = { { -1, -1, -1 }, { 1, 1, 1 } }, sb, ab;
+    cbx_status ss, as;
+    mpz_t sq, z;
+    double vs = 1, va = 1;
+    int i, j;
+
+    /* y = rad * Rx(45) * Rz(30) * p + (1, 2, 3); Rx(45) Rz(30) =
+     *   [ c     -s      0 ]
+     *   [ a s    a c   -b ]
+     *   [ b s    b c    a ]                                             */
+    set_row(&m, 0, rad * c, rad * -s, 0, 1);
+    set_row(&m, 1, rad * (a * s), rad * (a * c), rad * -b, 2);
+    set_row(&m, 2, rad * (b * s), rad * (b * c), rad * a, 3);
+
+    ss = cbx_sphere_box(&m, &sb);
+    as = cbx_transform_box(&m, &cube, &ab);
+
+    printf("[%d] sphere: unit ball scaled by 2, rotated 30 deg about z then 45 deg\n"
+           "    about x, translated (1, 2, 3)\n", n);
+    print_matrix(&m);
+    printf("  cbx_sphere_box (exact bounds t -+ sqrt(s), outward): status %s\n",
+           cbx_status_name(ss));
+    printf("  cbx_transform_box of the sphere's box [-1,1]^3 (Arvo):   status %s\n",
+           cbx_status_name(as));
+    printf("        %-45s %s\n", "sphere box", "Arvo box of [-1,1]^3");
+    mpz_inits(sq, z, (mpz_ptr)0);
+    for (i = 0; i < 3; i++) {
+        int ok;
+        mpz_set_ui(sq, 0);
+        for (j = 0; j < 3; j++) {  /* s = sum m_ij^2, scaled by 2^2148 */
+            xu_scaled_sh(z, m.m[i][j], 1074);
+            mpz_addmul(sq, z, z);
+        }
+        ok = ss == CBX_OK && xu_sqrt_lo_ok(x, sq, 1074, m.m[i][3], sb.lo[i])
+             && xu_sqrt_hi_ok(x, sq, 1074, m.m[i][3], sb.hi[i]);
+        printf("  y%d in [%20.17g, %20.17g]   [%20.17g, %20.17g]\n", i, sb.lo[i],
+               sb.hi[i], ab.lo[i], ab.hi[i]);
+        printf("       contains t -+ sqrt(s): %s, excess lo %.2f hi %.2f units of "
+               "u*(|t|+sqrt s)\n", ok ? "yes" : "NO",
+               sphere_units(sq, m.m[i][3], sb.lo[i], 0),
+               sphere_units(sq, m.m[i][3], sb.hi[i], 1));
+        vs *= sb.hi[i] - sb.lo[i];
+        va *= ab.hi[i] - ab.lo[i];
+    }
+    mpz_clears(sq, z, (mpz_ptr)0);
+    printf("  volume: sphere box %.6g (exact: 4^3 = 64), Arvo box %.6g\n"
+           "          ratio Arvo box / exact box = %.4f (the ball fills %.1f%% of "
+           "the exact box)\n\n", vs, va, va / vs,
+           100.0 * (32.0 / 3.0) * (4.0 * atan(1.0)) / vs);
+}
+
+/* ---- centre/half-diagonal form ---------------------------------------- */
+
+static void print_cbox_axes(const char *label, const cbx_cbox *b)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        printf("  %s%d: c = %24.17g, h = %24.17g\n", label, j, b->c[j], b->h[j]);
+}
+
+static void show_cbox(xu_exact *x, int n, const sample *smp)
+{
+    cbx_cbox cin, cout;
+    cbx_box viac, arvo;
+    cbx_status s1, s2, s3, s4;
+    int i;
+
+    s1 = cbx_box_to_cbox(&smp->in, &cin);
+    s2 = cbx_transform_cbox(&smp->a, &cin, &cout);
+    s3 = cbx_cbox_to_box(&cout, &viac);
+    s4 = cbx_transform_box(&smp->a, &smp->in, &arvo);
+    printf("[%d] centre/half-diagonal form (Arvo's Fig. 2) on sample [1]:\n"
+           "    box -> cbox -> transform -> box, next to cbx_transform_box\n", n);
+    print_matrix(&smp->a);
+    print_input(&smp->in);
+    printf("  cbx_box_to_cbox: %s, cbx_transform_cbox: %s, cbx_cbox_to_box: %s\n",
+           cbx_status_name(s1), cbx_status_name(s2), cbx_status_name(s3));
+    print_cbox_axes("in   x", &cin);
+    print_cbox_axes("out  y", &cout);
+    printf("        %-45s %s (%s)\n", "via cbox", "cbx_transform_box", cbx_status_name(s4));
+    for (i = 0; i < 3; i++) {
+        int ok = s3 == CBX_OK && isfinite(viac.lo[i]) && isfinite(viac.hi[i]);
+        double elo = 0, ehi = 0;
+        if (ok) {
+            xu_row_bounds(x, &smp->a, &smp->in, i);
+            elo = xu_excess_lo(x, viac.lo[i]);
+            ehi = xu_excess_hi(x, viac.hi[i]);
+            ok = elo >= 0 && ehi >= 0
+                 && xu_corner_failures(x, &smp->a, &smp->in, i, viac.lo[i], viac.hi[i]) == 0;
+        }
+        printf("  y%d in [%20.17g, %20.17g]   [%20.17g, %20.17g]\n", i, viac.lo[i],
+               viac.hi[i], arvo.lo[i], arvo.hi[i]);
+        printf("       via cbox contains the exact image: %s, excess lo %.2f hi %.2f "
+               "(units of u*S)\n", ok ? "yes" : "NO", elo, ehi);
+    }
+    printf("\n");
+}
+
 int main(void)
 {
     sample s[N_SAMPLES];
@@ -174,6 +313,8 @@ int main(void)
            "(proven: within 12 u S + 2^-1065, i.e. excess <= 12 except where\n"
            " u*S is near 2^-1074; target excess <= 8)\n\n", CBX_VERSION_STRING);
     for (n = 0; n < N_SAMPLES; n++) show(&x, n + 1, &s[n]);
+    show_sphere(&x, N_SAMPLES + 1);
+    show_cbox(&x, N_SAMPLES + 2, &s[0]);
     xu_clear(&x);
     return 0;
 }

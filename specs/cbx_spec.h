@@ -152,10 +152,220 @@
       && hi_tight(o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
                   b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
 
-    // What the function promises on axis i: proven inside the domain,
-    // the whole line [-inf, +inf] outside it.
+    // What the function promises on one axis, on the values themselves:
+    // proven inside the domain, the whole line [-inf, +inf] outside it.
+    predicate axis_sound_s(double lo, double hi, double m0, double m1, double m2, double t,
+                           double l0, double h0, double l1, double h1, double l2, double h2) =
+      ((\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+        && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+        && \is_finite(l2) && \is_finite(h2)
+        && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
+         (\is_finite(lo) && \is_finite(hi)
+          && below8(lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+          && above8(hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+          && lo_tight(lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+          && hi_tight(hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)))
+      && (!(\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+        && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+        && \is_finite(l2) && \is_finite(h2)
+        && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
+         (\is_minus_infinity(lo) && \is_plus_infinity(hi)));
+
+    // The same on the public structures.
     predicate axis_sound(cbx_affine *a, cbx_box *b, cbx_box *o, integer i) =
-      (row_dom(a, b, i) ==> axis_proven(a, b, o, i))
-      && (!row_dom(a, b, i) ==> whole_axis(o, i));
+      axis_sound_s(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                   b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
+*/
+
+/*@ // ---------------------------------------------------------------------
+    // Center/half-diagonal form: the real box [oc - oh, oc + oh] of one
+    // output axis and the input box [c_j - h_j, c_j + h_j].
+    // ---------------------------------------------------------------------
+    logic real crow_c(real m0, real m1, real m2, real t, real c0, real c1, real c2) =
+      m0*c0 + m1*c1 + m2*c2 + t;
+    logic real crow_h(real m0, real m1, real m2, real h0, real h1, real h2) =
+      \abs(m0*h0) + \abs(m1*h1) + \abs(m2*h2);
+    logic real crow_mag(real m0, real m1, real m2, real t, real c0, real c1, real c2,
+                        real h0, real h1, real h2) =
+      \abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2) + crow_h(m0, m1, m2, h0, h1, h2);
+
+    // |exact center - oc| + exact half <= oh: [oc-oh, oc+oh] holds the image.
+    predicate cbox_core(real oc, real oh, real m0, real m1, real m2, real t,
+                        real c0, real c1, real c2, real h0, real h1, real h2) =
+      \abs(crow_c(m0, m1, m2, t, c0, c1, c2) - oc) + crow_h(m0, m1, m2, h0, h1, h2) <= oh;
+
+    // The same, stated on the 8 corners c_j -+ h_j.
+    predicate cbox_corners(real oc, real oh, real m0, real m1, real m2, real t,
+                           real c0, real c1, real c2, real h0, real h1, real h2) =
+      below8(oc - oh, m0, m1, m2, t, c0 - h0, c0 + h0, c1 - h1, c1 + h1, c2 - h2, c2 + h2)
+      && above8(oc + oh, m0, m1, m2, t, c0 - h0, c0 + h0, c1 - h1, c1 + h1, c2 - h2, c2 + h2);
+
+    lemma cbox_core_corners:
+      \forall real oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2;
+        cbox_core(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2) ==>
+        cbox_corners(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
+
+    // Tightness: each end within 12 u S + 2^-1065 of the exact end.
+    predicate cbox_tight(real oc, real oh, real m0, real m1, real m2, real t,
+                         real c0, real c1, real c2, real h0, real h1, real h2) =
+      oc - oh >= crow_c(m0, m1, m2, t, c0, c1, c2) - crow_h(m0, m1, m2, h0, h1, h2)
+                 - (0x1.8p-50 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) + 0x1p-1065)
+      && oc + oh <= crow_c(m0, m1, m2, t, c0, c1, c2) + crow_h(m0, m1, m2, h0, h1, h2)
+                 + (0x1.8p-50 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) + 0x1p-1065);
+
+    predicate crow_in_dom(real m0, real m1, real m2, real t,
+                          real c0, real c1, real c2, real h0, real h1, real h2) =
+      dom_pair(m0, c0) && dom_pair(m0, h0) && dom_pair(m1, c1) && dom_pair(m1, h1)
+      && dom_pair(m2, c2) && dom_pair(m2, h2) && -0x1p1018 <= t <= 0x1p1018;
+*/
+
+/*@ predicate cbox_has_nan(cbx_affine *a, cbx_cbox *b) =
+         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
+      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
+      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3])
+      || \is_NaN(b->c[0]) || \is_NaN(b->c[1]) || \is_NaN(b->c[2])
+      || \is_NaN(b->h[0]) || \is_NaN(b->h[1]) || \is_NaN(b->h[2]);
+    predicate cbox_nan(cbx_cbox *b) =
+      \is_NaN(b->c[0]) || \is_NaN(b->c[1]) || \is_NaN(b->c[2])
+      || \is_NaN(b->h[0]) || \is_NaN(b->h[1]) || \is_NaN(b->h[2]);
+    predicate box_nan(cbx_box *b) =
+      \is_NaN(b->lo[0]) || \is_NaN(b->lo[1]) || \is_NaN(b->lo[2])
+      || \is_NaN(b->hi[0]) || \is_NaN(b->hi[1]) || \is_NaN(b->hi[2]);
+    // h < 0 on some axis (IEEE comparison; -0 is not negative)
+    predicate cbox_empty(cbx_cbox *b) =
+      \lt_double(b->h[0], (double)0.0) || \lt_double(b->h[1], (double)0.0)
+      || \lt_double(b->h[2], (double)0.0);
+    predicate cwhole_axis(cbx_cbox *o, integer i) =
+      o->c[i] == 0 && \is_plus_infinity(o->h[i]);
+    predicate cwhole(cbx_cbox *o) = cwhole_axis(o, 0) && cwhole_axis(o, 1) && cwhole_axis(o, 2);
+    predicate cempty(cbx_cbox *o) =
+         o->c[0] == 0 && \is_minus_infinity(o->h[0]) && o->c[1] == 0 && \is_minus_infinity(o->h[1])
+      && o->c[2] == 0 && \is_minus_infinity(o->h[2]);
+
+    predicate crow_dom(cbx_affine *a, cbx_cbox *b, integer i) =
+      \is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+      && \is_finite(a->m[i][3])
+      && \is_finite(b->c[0]) && \is_finite(b->c[1]) && \is_finite(b->c[2])
+      && \is_finite(b->h[0]) && \is_finite(b->h[1]) && \is_finite(b->h[2])
+      && crow_in_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                     b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2]);
+
+    predicate caxis_proven(cbx_affine *a, cbx_cbox *b, cbx_cbox *o, integer i) =
+      \is_finite(o->c[i]) && \is_finite(o->h[i])
+      && cbox_corners(o->c[i], o->h[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                      b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2])
+      && cbox_tight(o->c[i], o->h[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                    b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2]);
+
+    predicate caxis_sound(cbx_affine *a, cbx_cbox *b, cbx_cbox *o, integer i) =
+      (crow_dom(a, b, i) ==> caxis_proven(a, b, o, i))
+      && (!crow_dom(a, b, i) ==> cwhole_axis(o, i));
+
+    // Conversions: one axis in their domain (finite, magnitude <= 2^1019).
+    predicate conv_dom(real x, real y) = -0x1p1019 <= x <= 0x1p1019 && -0x1p1019 <= y <= 0x1p1019;
+
+    predicate b2c_axis(cbx_box *in, cbx_cbox *out, integer i) =
+      ((\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
+         (\is_finite(out->c[i]) && \is_finite(out->h[i])
+          && out->c[i] - out->h[i] <= in->lo[i] && in->hi[i] <= out->c[i] + out->h[i]))
+      && (!(\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
+          cwhole_axis(out, i));
+    predicate c2b_axis(cbx_cbox *in, cbx_box *out, integer i) =
+      ((\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
+         (\is_finite(out->lo[i]) && \is_finite(out->hi[i])
+          && out->lo[i] <= in->c[i] - in->h[i] && in->c[i] + in->h[i] <= out->hi[i]))
+      && (!(\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
+          whole_axis(out, i));
+*/
+
+/*@ // ---------------------------------------------------------------------
+    // Balls: p is in the closed unit ball; r bounds the row (b0, b1, b2).
+    // ---------------------------------------------------------------------
+    logic real dot3(real m0, real m1, real m2, real p0, real p1, real p2) =
+      m0*p0 + m1*p1 + m2*p2;
+    logic real nrm3(real a0, real a1, real a2) = a0*a0 + a1*a1 + a2*a2;
+    predicate in_ball(real p0, real p1, real p2) = nrm3(p0, p1, p2) <= 1;
+    predicate sq_bound(real b0, real b1, real b2, real r) =
+      0 <= r && nrm3(b0, b1, b2) <= r*r;
+    predicate sq_le(real a, real b) = a*a <= b*b;
+
+    // Squaring is monotone on nonnegative reals (both directions).
+    lemma sq_mono: \forall real a, b; 0 <= a <= b ==> sq_le(a, b);
+    lemma sq_abs: \forall real a, b; \abs(a) <= b ==> sq_le(a, b);
+    lemma sq_mono_inv: \forall real a, b; 0 <= a ==> 0 <= b ==> sq_le(a, b) ==> a <= b;
+
+    // Cauchy-Schwarz in 3 dimensions, via Lagrange's identity; each step is
+    // a separate lemma whose terms (dot3, nrm3) trigger the previous one.
+    lemma nrm3_pos: \forall real a0, a1, a2; nrm3(a0, a1, a2) >= 0;
+    lemma lagrange: \forall real m0, m1, m2, p0, p1, p2;
+      nrm3(m0, m1, m2) * nrm3(p0, p1, p2)
+        - dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2)
+      == nrm3(m0*p1 - m1*p0, m0*p2 - m2*p0, m1*p2 - m2*p1);
+    lemma cauchy_schwarz: \forall real m0, m1, m2, p0, p1, p2;
+      dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2)
+        <= nrm3(m0, m1, m2) * nrm3(p0, p1, p2);
+    lemma cs_ball: \forall real m0, m1, m2, p0, p1, p2;
+      nrm3(p0, p1, p2) <= 1 ==>
+      dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2) <= nrm3(m0, m1, m2);
+    lemma ball_row: \forall real m0, m1, m2, p0, p1, p2, r;
+      in_ball(p0, p1, p2) ==> sq_bound(m0, m1, m2, r) ==>
+      -r <= dot3(m0, m1, m2, p0, p1, p2) <= r;
+*/
+
+/*@ predicate in_dom508(real x, real y) = -0x1p508 <= x*y <= 0x1p508;
+    lemma cls_254: \forall real m, c; cls(m, c, 0x1p254, 0x1p254) ==> in_dom508(m, c);
+
+    predicate aff_nan(cbx_affine *a) =
+         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
+      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
+      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
+
+    // [lo, hi] holds coordinate t + b.p of every point p of the unit ball.
+    predicate ball_axis(real lo, real hi, real b0, real b1, real b2, real t) =
+      \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
+        lo <= dot3(b0, b1, b2, p0, p1, p2) + t <= hi;
+
+    predicate sph_dom(real m0, real m1, real m2, real t) =
+      cls(m0, m0, 0x1p509, 0x1p509) && cls(m1, m1, 0x1p509, 0x1p509)
+      && cls(m2, m2, 0x1p509, 0x1p509) && -0x1p1018 <= t <= 0x1p1018;
+
+    predicate sph_axis(cbx_affine *a, cbx_box *o, integer i) =
+      ((\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+        && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
+         (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
+          && ball_axis(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])))
+      && (!(\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+        && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
+         whole_axis(o, i));
+
+    predicate ell_dom(real r0, real r1, real r2, real d0, real d1, real d2, real c) =
+      cls(r0, d0, 0x1p254, 0x1p254) && cls(r1, d1, 0x1p254, 0x1p254)
+      && cls(r2, d2, 0x1p254, 0x1p254) && -0x1p1018 <= c <= 0x1p1018;
+*/
+
+/*@ predicate ell_nan(double *center, double *radii, double (*rot)[3]) =
+         \is_NaN(center[0]) || \is_NaN(center[1]) || \is_NaN(center[2])
+      || \is_NaN(radii[0]) || \is_NaN(radii[1]) || \is_NaN(radii[2])
+      || \is_NaN(rot[0][0]) || \is_NaN(rot[0][1]) || \is_NaN(rot[0][2])
+      || \is_NaN(rot[1][0]) || \is_NaN(rot[1][1]) || \is_NaN(rot[1][2])
+      || \is_NaN(rot[2][0]) || \is_NaN(rot[2][1]) || \is_NaN(rot[2][2]);
+
+    predicate ell_row_dom(double *center, double *radii, double (*rot)[3], integer i) =
+      \is_finite(rot[i][0]) && \is_finite(rot[i][1]) && \is_finite(rot[i][2])
+      && \is_finite(radii[0]) && \is_finite(radii[1]) && \is_finite(radii[2])
+      && \is_finite(center[i])
+      && ell_dom(rot[i][0], rot[i][1], rot[i][2], radii[0], radii[1], radii[2], center[i]);
+
+    // Axis i of o bounds center_i + sum_j rot_ij radii_j p_j over the unit ball.
+    predicate ell_axis(double *center, double *radii, double (*rot)[3], cbx_box *o, integer i) =
+      (ell_row_dom(center, radii, rot, i) ==>
+         (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
+          && ball_axis(o->lo[i], o->hi[i], rot[i][0]*radii[0], rot[i][1]*radii[1],
+                       rot[i][2]*radii[2], center[i])))
+      && (!ell_row_dom(center, radii, rot, i) ==> whole_axis(o, i));
+
+    predicate sph_row_dom(cbx_affine *a, integer i) =
+      \is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+      && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3]);
 */
 #endif /* CBX_SPEC_H */

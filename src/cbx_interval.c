@@ -12,6 +12,7 @@
  */
 #include "certbox.h"
 #include "cbx_round.h"
+#include "cbx_domain.h"
 
 /* The smaller of m*l and m*h: error u*tmag + eta (one rounding each). */
 /*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
@@ -57,30 +58,6 @@ static inline double term_mag(double m, double l, double h)
     return cbx_max2(cbx_abs(p), cbx_abs(q));
 }
 
-/* The computed scale R = |t| + g0 + g1 + g2 and the widening 5.5 u R + 2^-1067. */
-/*@ requires fin: \is_finite(t) && \is_finite(g0) && \is_finite(g1) && \is_finite(g2);
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
-    requires r0: 0 <= g0 <= 0x1p1018 + 0x1p966;
-    requires r1: 0 <= g1 <= 0x1p1018 + 0x1p966;
-    requires r2: 0 <= g2 <= 0x1p1018 + 0x1p966;
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures lo: \result >= 0x1.6p-51 * (\abs(t) + g0 + g1 + g2) * (1 - 0x1p-50) + 0x1p-1068;
-    ensures hi: \result <= 0x1.6p-51 * (\abs(t) + g0 + g1 + g2) * (1 + 0x1p-50) + 0x1p-1066;
-*/
-static inline double widening(double t, double g0, double g1, double g2)
-{
-    double r0 = cbx_abs(t);
-    double r1 = cbx_add_rn(r0, g0);
-    double r2 = cbx_add_rn(r1, g1);
-    double r3 = cbx_add_rn(r2, g2);
-    /*@ assert r3lo: r3 >= (\abs(t) + g0 + g1 + g2) * (1 - 0x1p-51) - 0x1p-1072; */
-    /*@ assert r3hi: r3 <= (\abs(t) + g0 + g1 + g2) * (1 + 0x1p-51) + 0x1p-1072; */
-    double w = cbx_mul_rn(r3, 0x1.6p-51);
-    /*@ assert wlo: w >= 0x1.6p-51 * r3 * (1 - 0x1p-53) - 0x1p-1074; */
-    return cbx_add_rn(w, 0x1p-1067);
-}
-
 /* Lower bound of one output axis. */
 /*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
     requires finb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
@@ -123,7 +100,7 @@ static double axis_lo(double m0, double m1, double m2, double t,
     /*@ assert r3: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + d2) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074; */
     /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074) <= s3 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2)) <= 0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074; */
     /*@ assert e3s: -(0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074) <= s3 - row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074; */
-    double w = widening(t, g0, g1, g2);
+    double w = cbx_widening(t, g0, g1, g2);
     /*@ assert w1: w >= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - 0x1p-49)
                         + 0x1p-1068 - 0x1p-1071; */
     /*@ assert w2: w <= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + 0x1p-49)
@@ -173,63 +150,13 @@ static double axis_hi(double m0, double m1, double m2, double t,
     /*@ assert r3: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + d2) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074; */
     /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074) <= s3 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2)) <= 0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074; */
     /*@ assert e3s: -(0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074) <= s3 - row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074; */
-    double w = widening(t, g0, g1, g2);
+    double w = cbx_widening(t, g0, g1, g2);
     /*@ assert w1: w >= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - 0x1p-49)
                         + 0x1p-1068 - 0x1p-1071; */
     /*@ assert w2: w <= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + 0x1p-49)
                         + 0x1p-1066 + 0x1p-1071; */
     return cbx_add_rn(s3, w);
 }
-
-/* 1 if x is finite: comparisons with NaN and infinities are false. */
-/*@ assigns \nothing;
-    ensures \result != 0 <==> \is_finite(x);
-*/
-static inline int is_fin(double x) { return x >= -0x1.fffffffffffffp1023 && x <= 0x1.fffffffffffffp1023; }
-
-/* 1 when every input of one output row is finite and in the proven domain
- * (specs: row_in_dom).  One early return per test keeps the proof linear. */
-/*@ assigns \nothing;
-    ensures ok: \result != 0 <==>
-      (\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-       && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-       && \is_finite(l2) && \is_finite(h2)
-       && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
-*/
-static int row_ok(double m0, double m1, double m2, double t,
-                  double l0, double h0, double l1, double h1, double l2, double h2)
-{
-    if (!is_fin(m0)) return 0;
-    if (!is_fin(m1)) return 0;
-    if (!is_fin(m2)) return 0;
-    if (!is_fin(t)) return 0;
-    if (!is_fin(l0)) return 0;
-    if (!is_fin(h0)) return 0;
-    if (!is_fin(l1)) return 0;
-    if (!is_fin(h1)) return 0;
-    if (!is_fin(l2)) return 0;
-    if (!is_fin(h2)) return 0;
-    if (!(t >= -0x1p1018 && t <= 0x1p1018)) return 0;
-    if (!cbx_dom_pair(m0, l0)) return 0;
-    if (!cbx_dom_pair(m0, h0)) return 0;
-    if (!cbx_dom_pair(m1, l1)) return 0;
-    if (!cbx_dom_pair(m1, h1)) return 0;
-    if (!cbx_dom_pair(m2, l2)) return 0;
-    if (!cbx_dom_pair(m2, h2)) return 0;
-    return 1;
-}
-
-/* 1 if x is NaN (x != x holds only for NaN). */
-/*@ assigns \nothing;
-    ensures \result != 0 <==> \is_NaN(x);
-*/
-static inline int is_nan(double x) { return x != x; }
-
-/* 1 if hi < lo in IEEE comparison (the box is empty on that axis). */
-/*@ assigns \nothing;
-    ensures \result != 0 <==> \lt_double(hi, lo);
-*/
-static inline int is_inverted(double lo, double hi) { return hi < lo; }
 
 /*@ requires \valid(out);
     assigns *out;
@@ -263,21 +190,14 @@ typedef struct axis_result { double lo, hi; int ok; } axis_result;
        && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
        && \is_finite(l2) && \is_finite(h2)
        && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
-    ensures in: \result.ok != 0 ==>
-      \is_finite(\result.lo) && \is_finite(\result.hi)
-      && below8(\result.lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-      && above8(\result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-      && lo_tight(\result.lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-      && hi_tight(\result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    ensures out: \result.ok == 0 ==>
-      \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
+    ensures sound: axis_sound_s(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
 static axis_result transform_axis(double m0, double m1, double m2, double t,
                                   double l0, double h0, double l1, double h1,
                                   double l2, double h2)
 {
     axis_result r;
-    r.ok = row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    r.ok = cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     if (r.ok) {
         r.lo = axis_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         r.hi = axis_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
@@ -295,15 +215,15 @@ static axis_result transform_axis(double m0, double m1, double m2, double t,
 */
 static int any_nan(const cbx_affine *a, const cbx_box *in)
 {
-    if (is_nan(a->m[0][0]) || is_nan(a->m[0][1]) || is_nan(a->m[0][2]) || is_nan(a->m[0][3]))
+    if (cbx_is_nan(a->m[0][0]) || cbx_is_nan(a->m[0][1]) || cbx_is_nan(a->m[0][2]) || cbx_is_nan(a->m[0][3]))
         return 1;
-    if (is_nan(a->m[1][0]) || is_nan(a->m[1][1]) || is_nan(a->m[1][2]) || is_nan(a->m[1][3]))
+    if (cbx_is_nan(a->m[1][0]) || cbx_is_nan(a->m[1][1]) || cbx_is_nan(a->m[1][2]) || cbx_is_nan(a->m[1][3]))
         return 1;
-    if (is_nan(a->m[2][0]) || is_nan(a->m[2][1]) || is_nan(a->m[2][2]) || is_nan(a->m[2][3]))
+    if (cbx_is_nan(a->m[2][0]) || cbx_is_nan(a->m[2][1]) || cbx_is_nan(a->m[2][2]) || cbx_is_nan(a->m[2][3]))
         return 1;
-    if (is_nan(in->lo[0]) || is_nan(in->lo[1]) || is_nan(in->lo[2]))
+    if (cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2]))
         return 1;
-    if (is_nan(in->hi[0]) || is_nan(in->hi[1]) || is_nan(in->hi[2]))
+    if (cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2]))
         return 1;
     return 0;
 }
@@ -315,8 +235,8 @@ static int any_nan(const cbx_affine *a, const cbx_box *in)
 */
 static int any_inverted(const cbx_box *in)
 {
-    return is_inverted(in->lo[0], in->hi[0]) || is_inverted(in->lo[1], in->hi[1])
-           || is_inverted(in->lo[2], in->hi[2]);
+    return cbx_is_inverted(in->lo[0], in->hi[0]) || cbx_is_inverted(in->lo[1], in->hi[1])
+           || cbx_is_inverted(in->lo[2], in->hi[2]);
 }
 
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
@@ -331,14 +251,27 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     }
     double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
     double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    axis_result r0 = transform_axis(a->m[0][0], a->m[0][1], a->m[0][2], a->m[0][3],
-                                    l0, h0, l1, h1, l2, h2);
-    axis_result r1 = transform_axis(a->m[1][0], a->m[1][1], a->m[1][2], a->m[1][3],
-                                    l0, h0, l1, h1, l2, h2);
-    axis_result r2 = transform_axis(a->m[2][0], a->m[2][1], a->m[2][2], a->m[2][3],
-                                    l0, h0, l1, h1, l2, h2);
+    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
+    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
+    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    axis_result r0 = transform_axis(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
+    axis_result r1 = transform_axis(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
+    axis_result r2 = transform_axis(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
     out->lo[0] = r0.lo; out->hi[0] = r0.hi;
     out->lo[1] = r1.lo; out->hi[1] = r1.hi;
     out->lo[2] = r2.lo; out->hi[2] = r2.hi;
+    /* the proof reads the inputs again in the final state: they are unchanged */
+    /*@ assert same_in: a->m[0][0] == a00 && a->m[0][1] == a01 && a->m[0][2] == a02
+          && a->m[0][3] == a03 && a->m[1][0] == a10 && a->m[1][1] == a11
+          && a->m[1][2] == a12 && a->m[1][3] == a13 && a->m[2][0] == a20
+          && a->m[2][1] == a21 && a->m[2][2] == a22 && a->m[2][3] == a23
+          && in->lo[0] == l0 && in->lo[1] == l1 && in->lo[2] == l2
+          && in->hi[0] == h0 && in->hi[1] == h1 && in->hi[2] == h2; */
+    /*@ assert same_out: out->lo[0] == r0.lo && out->hi[0] == r0.hi
+          && out->lo[1] == r1.lo && out->hi[1] == r1.hi
+          && out->lo[2] == r2.lo && out->hi[2] == r2.hi; */
+    /*@ assert as0: axis_sound_s(out->lo[0], out->hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2); */
+    /*@ assert as1: axis_sound_s(out->lo[1], out->hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2); */
+    /*@ assert as2: axis_sound_s(out->lo[2], out->hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2); */
     return (r0.ok && r1.ok && r2.ok) ? CBX_OK : CBX_ERANGE;
 }

@@ -26,10 +26,22 @@ double cbx_pinf(void);
 /*@ assigns \result \from \nothing;
     ensures \is_minus_infinity(\result); */
 double cbx_ninf(void);
+/* IEEE-754 sqrt is correctly rounded: r = RN(sqrt(x)).  For x > 0 a double,
+ * sqrt(x) >= 2^-537 is normal, so |r - sqrt(x)| <= u sqrt(x) and
+ * r^2 lies within a factor (1 -+ u)^2 of x; these squared forms are the
+ * contract (trusted; listed in proofs/README.md). */
+/*@ requires fin: \is_finite(x) && 0 <= x <= 0x1p1021;
+    assigns \result \from x;
+    ensures fin: \is_finite(\result) && \result >= 0;
+    ensures up: x <= \result * \result * (1 + 0x1p-51);
+    ensures dn: \result * \result <= x * (1 + 0x1p-51);
+*/
+double cbx_sqrt_rn(double x);
 #else
 #include <math.h>
 static inline double cbx_pinf(void) { return HUGE_VAL; }
 static inline double cbx_ninf(void) { return -HUGE_VAL; }
+static inline double cbx_sqrt_rn(double x) { return sqrt(x); }
 #endif
 
 /* Product rounded to nearest; the range precondition rules out overflow. */
@@ -38,6 +50,7 @@ static inline double cbx_ninf(void) { return -HUGE_VAL; }
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures err: \abs(\result - x*y) <= 0x1p-53 * \abs(x*y) + 0x1p-1074;
+    ensures pos: x*y >= 0 ==> \result >= 0;
 */
 static inline double cbx_mul_rn(double x, double y) { return x * y; }
 
@@ -57,6 +70,7 @@ static inline double cbx_add_rn(double x, double y) { return x + y; }
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures err: \abs(\result - (x - y)) <= 0x1p-53 * \abs(x - y) + 0x1p-1074;
+    ensures pos: x - y >= 0 ==> \result >= 0;
 */
 static inline double cbx_sub_rn(double x, double y) { return x - y; }
 
@@ -83,43 +97,29 @@ static inline double cbx_min2(double x, double y) { return x < y ? x : y; }
 */
 static inline double cbx_max2(double x, double y) { return x < y ? y : x; }
 
-/* One magnitude class: |m| <= bm and |c| <= bc (specs: cls). */
-/*@ requires fin: \is_finite(m) && \is_finite(c) && \is_finite(bm) && \is_finite(bc);
+/* The one outward widening of a bound: 5.5 u R + 2^-1067 with the computed
+ * scale R = |t| + g0 + g1 + g2 (g_j >= 0 the magnitudes of the terms). */
+/*@ requires fin: \is_finite(t) && \is_finite(g0) && \is_finite(g1) && \is_finite(g2);
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    requires r0: 0 <= g0 <= 0x1p1019 + 0x1p968;
+    requires r1: 0 <= g1 <= 0x1p1019 + 0x1p968;
+    requires r2: 0 <= g2 <= 0x1p1019 + 0x1p968;
     assigns \nothing;
-    ensures val: \result != 0 <==> cls(m, c, bm, bc);
+    ensures fin: \is_finite(\result);
+    ensures lo: \result >= 0x1.6p-51 * (\abs(t) + g0 + g1 + g2) * (1 - 0x1p-50) + 0x1p-1068;
+    ensures hi: \result <= 0x1.6p-51 * (\abs(t) + g0 + g1 + g2) * (1 + 0x1p-50) + 0x1p-1066;
 */
-static inline int cbx_cls(double m, double c, double bm, double bc)
+static inline double cbx_widening(double t, double g0, double g1, double g2)
 {
-    return m >= -bm && m <= bm && c >= -bc && c <= bc;
-}
-
-/* Run-time check of one product's domain class (specs: dom_pair).
- * The common class (both factors at most 2^509) comes first. */
-/*@ requires fin: \is_finite(m) && \is_finite(c);
-    assigns \nothing;
-    ensures val: \result != 0 <==> dom_pair(m, c);
-*/
-static inline int cbx_dom_pair(double m, double c)
-{
-    if (cbx_cls(m, c, 0x1p509, 0x1p509)) return 1;
-    if (cbx_cls(m, c, 0x1p0, 0x1p1018)) return 1;
-    if (cbx_cls(m, c, 0x1p64, 0x1p954)) return 1;
-    if (cbx_cls(m, c, 0x1p128, 0x1p890)) return 1;
-    if (cbx_cls(m, c, 0x1p192, 0x1p826)) return 1;
-    if (cbx_cls(m, c, 0x1p256, 0x1p762)) return 1;
-    if (cbx_cls(m, c, 0x1p320, 0x1p698)) return 1;
-    if (cbx_cls(m, c, 0x1p384, 0x1p634)) return 1;
-    if (cbx_cls(m, c, 0x1p448, 0x1p570)) return 1;
-    if (cbx_cls(m, c, 0x1p512, 0x1p506)) return 1;
-    if (cbx_cls(m, c, 0x1p576, 0x1p442)) return 1;
-    if (cbx_cls(m, c, 0x1p640, 0x1p378)) return 1;
-    if (cbx_cls(m, c, 0x1p704, 0x1p314)) return 1;
-    if (cbx_cls(m, c, 0x1p768, 0x1p250)) return 1;
-    if (cbx_cls(m, c, 0x1p832, 0x1p186)) return 1;
-    if (cbx_cls(m, c, 0x1p896, 0x1p122)) return 1;
-    if (cbx_cls(m, c, 0x1p960, 0x1p58)) return 1;
-    if (cbx_cls(m, c, 0x1p1018, 0x1p0)) return 1;
-    return 0;
+    double r0 = cbx_abs(t);
+    double r1 = cbx_add_rn(r0, g0);
+    double r2 = cbx_add_rn(r1, g1);
+    double r3 = cbx_add_rn(r2, g2);
+    /*@ assert r3lo: r3 >= (\abs(t) + g0 + g1 + g2) * (1 - 0x1p-51) - 0x1p-1072; */
+    /*@ assert r3hi: r3 <= (\abs(t) + g0 + g1 + g2) * (1 + 0x1p-51) + 0x1p-1072; */
+    double w = cbx_mul_rn(r3, 0x1.6p-51);
+    /*@ assert wlo: w >= 0x1.6p-51 * r3 * (1 - 0x1p-53) - 0x1p-1074; */
+    return cbx_add_rn(w, 0x1p-1067);
 }
 
 #endif /* CBX_ROUND_H */

@@ -50,6 +50,9 @@ typedef struct cbx_affine { double m[3][4]; } cbx_affine;
 /* the closed box [lo[0],hi[0]] x [lo[1],hi[1]] x [lo[2],hi[2]] */
 typedef struct cbx_box { double lo[3], hi[3]; } cbx_box;
 
+/* the real box [c - h, c + h] per axis; h >= 0 (h < 0: empty) */
+typedef struct cbx_cbox { double c[3], h[3]; } cbx_cbox;
+
 typedef enum cbx_status {
     CBX_OK = 0,      /* result proven to contain the exact image           */
     CBX_EMPTY = 1,   /* input box empty (lo > hi on some axis): out empty  */
@@ -95,6 +98,133 @@ typedef enum cbx_status {
     disjoint behaviors;
 */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out);
+
+/* ---- center/half-diagonal form (Arvo's Fig. 2) -------------------------
+ * A cbx_cbox means the exact real box [c - h, c + h] (per axis); h >= 0.
+ * h < 0 on some axis means an empty box.  Every function below is sound for
+ * that meaning: the rounding of the center is paid for in the half-diagonal.
+ * Status and output follow cbx_transform_box:
+ *   NaN anywhere           -> CBX_EINVAL, out: c = 0, h = +inf on every axis
+ *   h < 0 on some axis     -> CBX_EMPTY,  out: c = 0, h = -inf on every axis
+ *   axis outside domain    -> CBX_ERANGE, that axis c = 0, h = +inf
+ * Domain of cbx_transform_cbox: as for cbx_transform_box with the pairs
+ * (m[i][j], c[j]) and (m[i][j], h[j]).  Domain of the conversions: every
+ * input finite with magnitude <= 2^1019. */
+
+/* Arvo's center/half-diagonal form: c' = M c + T, h' = |M| h, outward. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes cbox_has_nan(a, in);
+      ensures \result == CBX_EINVAL && cwhole(out);
+    behavior empty_input:
+      assumes !cbox_has_nan(a, in) && cbox_empty(in);
+      ensures \result == CBX_EMPTY && cempty(out);
+    behavior box_input:
+      assumes !cbox_has_nan(a, in) && !cbox_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: caxis_sound(a, in, out, 0);
+      ensures axis1: caxis_sound(a, in, out, 1);
+      ensures axis2: caxis_sound(a, in, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (crow_dom(a, in, 0) && crow_dom(a, in, 1) && crow_dom(a, in, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox *out);
+
+/* [lo, hi] -> (c, h) with [c - h, c + h] containing [lo, hi]. */
+/*@ requires valid: \valid_read(in) && \valid(out);
+    requires sep: \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes box_nan(in);
+      ensures \result == CBX_EINVAL && cwhole(out);
+    behavior empty_input:
+      assumes !box_nan(in) && is_empty(in);
+      ensures \result == CBX_EMPTY && cempty(out);
+    behavior box_input:
+      assumes !box_nan(in) && !is_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures ax0: b2c_axis(in, out, 0);
+      ensures ax1: b2c_axis(in, out, 1);
+      ensures ax2: b2c_axis(in, out, 2);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out);
+
+/* (c, h) -> [lo, hi] containing [c - h, c + h]. */
+/*@ requires valid: \valid_read(in) && \valid(out);
+    requires sep: \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes cbox_nan(in);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior empty_input:
+      assumes !cbox_nan(in) && cbox_empty(in);
+      ensures \result == CBX_EMPTY && empty_out(out);
+    behavior box_input:
+      assumes !cbox_nan(in) && !cbox_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures ax0: c2b_axis(in, out, 0);
+      ensures ax1: c2b_axis(in, out, 1);
+      ensures ax2: c2b_axis(in, out, 2);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out);
+
+/* ---- spheres and ellipsoids: exact (dual-quadric) bounds ---------------
+ * cbx_sphere_box: the image of the unit ball {p : |p| <= 1} under the affine
+ * map: axis i is m[i][3] -+ sqrt(m[i][0]^2 + m[i][1]^2 + m[i][2]^2), rounded
+ * outward.  Domain: every entry finite, |m[i][j]| <= 2^509 (j < 3),
+ * |m[i][3]| <= 2^1018.
+ * cbx_ellipsoid_box: the ellipsoid center + rot * diag(radii) * p, |p| <= 1
+ * (rot need not be orthogonal; radii may be negative or zero).  Domain:
+ * |rot[i][j]| <= 2^254, |radii[j]| <= 2^254, |center[i]| <= 2^1018.
+ * NaN -> CBX_EINVAL and the whole space; outside the domain -> CBX_ERANGE
+ * and those axes [-inf, +inf]. */
+/*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
+    assigns *out;
+    behavior nan_input:
+      assumes aff_nan(a);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior map_input:
+      assumes !aff_nan(a);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: sph_axis(a, out, 0);
+      ensures axis1: sph_axis(a, out, 1);
+      ensures axis2: sph_axis(a, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (sph_row_dom(a, 0) && sph_row_dom(a, 1) && sph_row_dom(a, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out);
+
+/*@ requires valid: \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, center + (0 .. 2), radii + (0 .. 2), rot + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes ell_nan(center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior ellipsoid_input:
+      assumes !ell_nan(center, radii, rot);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: ell_axis(center, radii, rot, out, 0);
+      ensures axis1: ell_axis(center, radii, rot, out, 1);
+      ensures axis2: ell_axis(center, radii, rot, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (ell_row_dom(center, radii, rot, 0) && ell_row_dom(center, radii, rot, 1)
+         && ell_row_dom(center, radii, rot, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
+                             const double rot[3][3], cbx_box *out);
 
 /* Human-readable name of a status ("CBX_OK", ...). */
 const char *cbx_status_name(cbx_status s);

@@ -597,3 +597,138 @@ void xu_print_case(FILE *f, const cbx_affine *a, const cbx_box *in)
                 a->m[i][1], a->m[i][2], a->m[i][3]);
     xu_print_box(f, "in", in);
 }
+
+/* ---------------------------------------------------------------------- */
+/* Helpers for test_cbox, test_sphere and the demo                        */
+/* ---------------------------------------------------------------------- */
+
+long xu_split_d(mpz_t z, double v) { return xu_split(z, v); }
+
+void xu_scaled_mul(xu_exact *x, mpz_t z, double m, double c)
+{
+    xu_scaled_prod(x, z, m, c);
+}
+
+double xu_units(xu_exact *x, const mpz_t gap, const mpz_t S)
+{
+    /* x->e = (u S + eta) 2^(XU_SHIFT + 53) = S + 2^(XU_SHIFT - 1074 + 53),
+     * as in xu_unit_den but without touching x->S */
+    mpz_set_ui(x->e, 1);
+    mpz_mul_2exp(x->e, x->e, XU_SHIFT - 1074 + 53);
+    mpz_add(x->e, x->e, S);
+    return xu_ratio53(gap, x->e);
+}
+
+/* u S < 2^-1000  <=>  S 2^XU_SHIFT < 2^(XU_SHIFT - 947) */
+int xu_scale_tiny(const mpz_t S)
+{
+    return mpz_sgn(S) == 0 || mpz_sizeinbase(S, 2) <= XU_SHIFT - 947;
+}
+
+/* gap 2^XU_SHIFT > 2^(XU_SHIFT - 1000) */
+int xu_gap_above_tiny_cap(const mpz_t gap)
+{
+    return mpz_sgn(gap) > 0
+           && (mpz_sizeinbase(gap, 2) > XU_SHIFT - 1000 + 1
+               || (mpz_sizeinbase(gap, 2) == XU_SHIFT - 1000 + 1
+                   && mpz_scan1(gap, 0) < XU_SHIFT - 1000));
+}
+
+int xu_cbox_has_nan(const cbx_affine *a, const cbx_cbox *in)
+{
+    int i, j;
+    if (a)
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 4; j++)
+                if (xu_is_nan(a->m[i][j])) return 1;
+    for (j = 0; j < 3; j++)
+        if (xu_is_nan(in->c[j]) || xu_is_nan(in->h[j])) return 1;
+    return 0;
+}
+
+int xu_cbox_is_empty(const cbx_cbox *in)
+{
+    return in->h[0] < 0.0 || in->h[1] < 0.0 || in->h[2] < 0.0;
+}
+
+int xu_cbox_row_in_domain(const cbx_affine *a, const cbx_cbox *in, int i)
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        if (!xu_pair_in_domain(a->m[i][j], in->c[j])) return 0;
+        if (!xu_pair_in_domain(a->m[i][j], in->h[j])) return 0;
+    }
+    return fabs(a->m[i][3]) <= ldexp(1.0, 1018);
+}
+
+void xu_scaled_sh(mpz_t z, double v, unsigned long sh)
+{
+    long e = xu_split(z, v);
+    mpz_mul_2exp(z, z, (mp_bitcnt_t)((long)sh + e));
+}
+
+/* d = (p - q) 2^sh; d >= 0 and d^2 >= s */
+static int xu_sqrt_side_ok(xu_exact *x, const mpz_t s, unsigned long sh,
+                           double p, double q)
+{
+    xu_scaled_sh(x->d, p, sh);
+    xu_scaled_sh(x->t, q, sh);
+    mpz_sub(x->d, x->d, x->t);
+    if (mpz_sgn(x->d) < 0) return 0;
+    mpz_mul(x->d, x->d, x->d);
+    return mpz_cmp(x->d, s) >= 0;
+}
+
+int xu_sqrt_lo_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
+                  double lo)
+{
+    return xu_sqrt_side_ok(x, s, sh, t, lo);
+}
+
+int xu_sqrt_hi_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
+                  double hi)
+{
+    return xu_sqrt_side_ok(x, s, sh, hi, t);
+}
+
+uint64_t xu_rng_next(xu_rng *r)
+{
+    uint64_t z = (r->s += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+int xu_rng_int(xu_rng *r, int lo, int hi)
+{
+    uint64_t span = (uint64_t)((long)hi - (long)lo + 1);
+    return (int)((long)lo + (long)(xu_rng_next(r) % span));
+}
+
+double xu_rng_sign(xu_rng *r) { return (xu_rng_next(r) >> 63) ? -1.0 : 1.0; }
+
+double xu_rng_unit(xu_rng *r)
+{
+    return ldexp((double)(xu_rng_next(r) >> 11), -53);
+}
+
+double xu_gen_mag(xu_rng *r, int emin, int emax)
+{
+    int p = xu_rng_int(r, 0, 99), e;
+    double frac;
+    if (emin < -1074) emin = -1074;
+    if (emax > 1023) emax = 1023;
+    if (emax < emin) emax = emin;
+    if (p < 4) return 0.0;
+    if (p < 8) return ldexp(1.0, emax);
+    if (p < 12 && emin <= -1022 && emax >= -1022)
+        return ldexp((double)((xu_rng_next(r) >> 12) | 1u), -1074);
+    e = xu_rng_int(r, emin - 1, emax - 1);
+    frac = 1.0 + ldexp((double)(xu_rng_next(r) >> 12), -52);
+    return ldexp(frac, e);
+}
+
+double xu_gen_signed(xu_rng *r, int emin, int emax)
+{
+    return xu_rng_sign(r) * xu_gen_mag(r, emin, emax);
+}

@@ -20,6 +20,7 @@
 #ifndef EXACT_UTIL_H
 #define EXACT_UTIL_H
 
+#include <stdint.h>
 #include <stdio.h>
 #include <gmp.h>
 #include "certbox.h"
@@ -172,5 +173,53 @@ void xu_stats_print(FILE *f, const char *title, const xu_stats *s);
 int xu_status_index(cbx_status s);  /* 0..3, or -1 if not a known value */
 void xu_print_case(FILE *f, const cbx_affine *a, const cbx_box *in);
 void xu_print_box(FILE *f, const char *label, const cbx_box *b);
+
+/* ---- helpers for test_cbox, test_sphere and the demo (GMP only) --------
+ * None of these calls the library, so test_exact / test_badinput still link
+ * against a library without the cbox and sphere sources. */
+
+/* v = z * 2^e exactly, e >= -1074 returned (v finite; z = 0 for v = 0). */
+long xu_split_d(mpz_t z, double v);
+/* z = m * c * 2^XU_SHIFT, exactly (m, c finite). */
+void xu_scaled_mul(xu_exact *x, mpz_t z, double m, double c);
+/* gap / (u S + eta) as a double (a few ulps of error; statistics only);
+ * gap and S are scaled by 2^XU_SHIFT, S >= 0.  Uses x->e as scratch
+ * (gap and S must not be x->e). */
+double xu_units(xu_exact *x, const mpz_t gap, const mpz_t S);
+/* 1 if u S < 2^-1000 for a scaled S: where absolute terms of a widening
+ * (2^-1065 and friends) dominate, a relative excess means nothing. */
+int xu_scale_tiny(const mpz_t S);
+/* 1 if a scaled gap is above 2^-1000 (absolute sanity bound there). */
+int xu_gap_above_tiny_cap(const mpz_t gap);
+
+/* The centre/half-diagonal form (struct cbx_cbox in certbox.h). */
+int xu_cbox_has_nan(const cbx_affine *a, const cbx_cbox *in); /* a may be 0 */
+int xu_cbox_is_empty(const cbx_cbox *in);        /* some h[j] < 0 (IEEE)   */
+/* Row i of cbx_transform_cbox in the domain: m[i][0..3], c[], h[] finite,
+ * every (m[i][j], c[j]) and (m[i][j], h[j]) in a class, |m[i][3]| <= 2^1018. */
+int xu_cbox_row_in_domain(const cbx_affine *a, const cbx_cbox *in, int i);
+
+/* Exact containment of t -+ sqrt(s') where s' = s / 2^(2 sh) (s an integer
+ * >= 0, sh >= 1074 so that every double times 2^sh is an integer):
+ *   xu_sqrt_lo_ok: lo <= t - sqrt(s')  <=>  t - lo >= 0 and (t - lo)^2 >= s'
+ *   xu_sqrt_hi_ok: hi >= t + sqrt(s')  <=>  hi - t >= 0 and (hi - t)^2 >= s'
+ * lo, hi, t finite.  Use x->d and x->t as scratch (s must be neither). */
+int xu_sqrt_lo_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
+                  double lo);
+int xu_sqrt_hi_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
+                  double hi);
+/* z = v * 2^sh exactly (sh >= 1074, v finite). */
+void xu_scaled_sh(mpz_t z, double v, unsigned long sh);
+
+/* splitmix64, the generator of test_exact, shared by the newer tests. */
+typedef struct xu_rng { uint64_t s; } xu_rng;
+uint64_t xu_rng_next(xu_rng *r);
+int xu_rng_int(xu_rng *r, int lo, int hi);          /* uniform in [lo, hi] */
+double xu_rng_sign(xu_rng *r);                      /* -1.0 or 1.0         */
+double xu_rng_unit(xu_rng *r);                      /* [0, 1), 53 bits     */
+/* |v| in [0, 2^emax]: 4% zero, 4% exactly 2^emax, some subnormals (when
+ * emin <= -1022), otherwise a full mantissa with exponent in [emin, emax). */
+double xu_gen_mag(xu_rng *r, int emin, int emax);
+double xu_gen_signed(xu_rng *r, int emin, int emax); /* with -0.0 */
 
 #endif /* EXACT_UTIL_H */

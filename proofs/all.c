@@ -1,0 +1,7 @@
+/* The whole library as one translation unit, for Frama-C: the static inline
+ * primitives of the internal headers then exist (and are proven) once. */
+#include "cbx_interval.c"
+#include "cbx_center.c"
+#include "cbx_convert.c"
+#include "cbx_sphere.c"
+#include "cbx_status.c"

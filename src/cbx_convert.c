@@ -1,0 +1,131 @@
+/*
+ * Conversions between the two box forms, rounded outward.
+ *   [lo, hi] -> (c, h): c = lo/2 + hi/2 in round-to-nearest (halving first
+ *     cannot overflow), h = max(hi - c, c - lo) widened by 2^-50 relative
+ *     and 2^-1070 absolute, which covers the two roundings of h's inputs.
+ *   (c, h) -> [lo, hi]: lo = RN(c - h) - (3u |RN(c - h)| + 2^-1070), and
+ *     symmetrically for hi.
+ * Domain: finite inputs of magnitude at most 2^1019 (specs: conv_dom).
+ */
+#include "certbox.h"
+#include "cbx_round.h"
+#include "cbx_domain.h"
+#include "cbx_endpoints.h"
+
+
+/* One axis, box -> cbox: returns (c, h). */
+/*@ requires fin: \is_finite(lo) && \is_finite(hi);
+    requires dom: conv_dom(lo, hi);
+    requires ord: lo <= hi;
+    assigns \nothing;
+    ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
+    ensures sound: \result.a - \result.b <= lo && hi <= \result.a + \result.b;
+*/
+static conv_res b2c(double lo, double hi)
+{
+    double a = cbx_mul_rn(lo, 0.5);
+    double b = cbx_mul_rn(hi, 0.5);
+    double c = cbx_add_rn(a, b);
+    double d1 = cbx_sub_rn(hi, c);
+    double d2 = cbx_sub_rn(c, lo);
+    double d = cbx_max2(d1, d2);
+    /*@ assert x1: hi - c >= 0 ==> d1 >= 0 && (hi - c) * (1 - 0x1p-53) <= d1 + 0x1p-1074; */
+    /*@ assert x2: c - lo >= 0 ==> d2 >= 0 && (c - lo) * (1 - 0x1p-53) <= d2 + 0x1p-1074; */
+    /*@ assert dpos: d >= 0; */
+    /*@ assert up1: hi - c <= d * (1 + 0x1p-52) + 0x1p-1073; */
+    /*@ assert up2: c - lo <= d * (1 + 0x1p-52) + 0x1p-1073; */
+    double e = cbx_mul_rn(cbx_max2(d, 0.0), 0x1p-50);
+    double f = cbx_add_rn(cbx_max2(d, 0.0), e);
+    conv_res r;
+    r.a = c;
+    r.b = cbx_add_rn(f, 0x1p-1070);
+    /*@ assert hb: r.b >= d * (1 + 0x1p-52) + 0x1p-1072; */
+    return r;
+}
+
+/*@ assigns \nothing;
+    ensures \result != 0 <==> (\is_finite(x) && \is_finite(y) && conv_dom(x, y));
+*/
+static int conv_ok(double x, double y)
+{
+    return x >= -0x1p1019 && x <= 0x1p1019 && y >= -0x1p1019 && y <= 0x1p1019;
+}
+
+/*@ requires \valid(out);
+    requires i: 0 <= i <= 2;
+    assigns out->c[i], out->h[i];
+    ensures cwhole_axis(out, i);
+*/
+static void cwhole_set(cbx_cbox *out, int i)
+{
+    out->c[i] = 0.0;
+    out->h[i] = cbx_pinf();
+}
+
+cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
+{
+    if (cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
+        || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2])) {
+        out->c[0] = 0.0; out->h[0] = cbx_pinf();
+        out->c[1] = 0.0; out->h[1] = cbx_pinf();
+        out->c[2] = 0.0; out->h[2] = cbx_pinf();
+        return CBX_EINVAL;
+    }
+    if (cbx_is_inverted(in->lo[0], in->hi[0]) || cbx_is_inverted(in->lo[1], in->hi[1])
+        || cbx_is_inverted(in->lo[2], in->hi[2])) {
+        out->c[0] = 0.0; out->h[0] = cbx_ninf();
+        out->c[1] = 0.0; out->h[1] = cbx_ninf();
+        out->c[2] = 0.0; out->h[2] = cbx_ninf();
+        return CBX_EMPTY;
+    }
+    int k0 = conv_ok(in->lo[0], in->hi[0]);
+    int k1 = conv_ok(in->lo[1], in->hi[1]);
+    int k2 = conv_ok(in->lo[2], in->hi[2]);
+    /* not inverted and finite: lo <= hi */
+    if (k0) { conv_res r = b2c(in->lo[0], in->hi[0]); out->c[0] = r.a; out->h[0] = r.b; }
+    else cwhole_set(out, 0);
+    if (k1) { conv_res r = b2c(in->lo[1], in->hi[1]); out->c[1] = r.a; out->h[1] = r.b; }
+    else cwhole_set(out, 1);
+    if (k2) { conv_res r = b2c(in->lo[2], in->hi[2]); out->c[2] = r.a; out->h[2] = r.b; }
+    else cwhole_set(out, 2);
+    return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
+}
+
+/*@ requires \valid(out);
+    requires i: 0 <= i <= 2;
+    assigns out->lo[i], out->hi[i];
+    ensures whole_axis(out, i);
+*/
+static void whole_set(cbx_box *out, int i)
+{
+    out->lo[i] = cbx_ninf();
+    out->hi[i] = cbx_pinf();
+}
+
+cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
+{
+    if (cbx_is_nan(in->c[0]) || cbx_is_nan(in->c[1]) || cbx_is_nan(in->c[2])
+        || cbx_is_nan(in->h[0]) || cbx_is_nan(in->h[1]) || cbx_is_nan(in->h[2])) {
+        out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
+        out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
+        out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
+        return CBX_EINVAL;
+    }
+    if (cbx_is_inverted(0.0, in->h[0]) || cbx_is_inverted(0.0, in->h[1])
+        || cbx_is_inverted(0.0, in->h[2])) {
+        out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
+        out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
+        out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
+        return CBX_EMPTY;
+    }
+    int k0 = conv_ok(in->c[0], in->h[0]);
+    int k1 = conv_ok(in->c[1], in->h[1]);
+    int k2 = conv_ok(in->c[2], in->h[2]);
+    if (k0) { conv_res r = cbx_c2b(in->c[0], in->h[0]); out->lo[0] = r.a; out->hi[0] = r.b; }
+    else whole_set(out, 0);
+    if (k1) { conv_res r = cbx_c2b(in->c[1], in->h[1]); out->lo[1] = r.a; out->hi[1] = r.b; }
+    else whole_set(out, 1);
+    if (k2) { conv_res r = cbx_c2b(in->c[2], in->h[2]); out->lo[2] = r.a; out->hi[2] = r.b; }
+    else whole_set(out, 2);
+    return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
+}

@@ -1,0 +1,270 @@
+/*
+ * Exact (dual-quadric) bounds of transformed spheres and ellipsoids.
+ *
+ * The image of the unit ball under y = M p + T has, on axis i, the exact
+ * bounds T_i -+ ||M_i|| (row norm): |M_i . p| <= ||M_i|| ||p|| (Cauchy-
+ * Schwarz, specs: ball_row) with equality at p = M_i / ||M_i||.  Here the
+ * row norm is bounded from above in binary64: the squares and their sum in
+ * round-to-nearest, widened by 2^-50 relative and 2^-1070 absolute, the
+ * square root (correctly rounded), widened by 2^-50 relative; then T_i -+ r
+ * is rounded outward.  The absolute term puts a floor of about 2^-535 under
+ * every radius (squares of rows below ~2^-537 underflow in binary64), so
+ * rows of norm below ~2^-480 get a box wider than the exact one by up to
+ * 2^-534; containment holds everywhere.
+ * An ellipsoid center + rot * diag(radii) * p uses the same kernel on the
+ * row |rot_ij * radii_j| rounded up.
+ */
+#include "certbox.h"
+#include "cbx_round.h"
+#include "cbx_domain.h"
+#include "cbx_endpoints.h"
+
+/* An upper bound r of the norm of (b0, b1, b2): b . b <= r^2. */
+/*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
+    requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
+                  && cls(b2, b2, 0x1p509, 0x1p509);
+    assigns \nothing;
+    ensures fin: \is_finite(\result) && 0 <= \result <= 0x1p512;
+    ensures bound: sq_bound(b0, b1, b2, \result);
+*/
+static double ball_radius(double b0, double b1, double b2)
+{
+    double q0 = cbx_mul_rn(b0, b0);
+    double q1 = cbx_mul_rn(b1, b1);
+    double q2 = cbx_mul_rn(b2, b2);
+    /*@ assert sq: b0*b0 >= 0 && b1*b1 >= 0 && b2*b2 >= 0; */
+    /*@ assert q: q0 >= b0*b0 * (1 - 0x1p-53) - 0x1p-1074 && q1 >= b1*b1 * (1 - 0x1p-53) - 0x1p-1074
+                  && q2 >= b2*b2 * (1 - 0x1p-53) - 0x1p-1074; */
+    /*@ assert qpos: q0 >= 0 && q1 >= 0 && q2 >= 0; */
+    double s1 = cbx_add_rn(q0, q1);
+    double s2 = cbx_add_rn(s1, q2);
+    /*@ assert s: s2 >= nrm3(b0, b1, b2) * (1 - 0x1p-51) - 0x1p-1071 && s2 >= 0; */
+    /*@ assert smax: s2 <= 0x1p1020; */
+    double e = cbx_mul_rn(s2, 0x1p-50);
+    double f = cbx_add_rn(s2, e);
+    double su = cbx_add_rn(f, 0x1p-1070);
+    /*@ assert su: su >= nrm3(b0, b1, b2) && su <= 0x1p1021; */
+    double r = cbx_sqrt_rn(su);
+    /*@ assert rb: sq_le(r, 0x1p511); */
+    /*@ assert rb2: r <= 0x1p511; */
+    double e2 = cbx_mul_rn(r, 0x1p-50);
+    double ru = cbx_add_rn(cbx_add_rn(r, e2), 0x1p-1070);
+    /*@ assert ru1: ru >= r * (1 + 0x1p-52); */
+    /*@ assert ru2: sq_le(r * (1 + 0x1p-52), ru); */
+    /*@ assert ru3: ru * ru >= su; */
+    return ru;
+}
+
+/* Bounds [lo, hi] of t + b . p over the unit ball. */
+/*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(t);
+    requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
+                  && cls(b2, b2, 0x1p509, 0x1p509);
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
+    ensures ball: ball_axis(\result.a, \result.b, b0, b1, b2, t);
+*/
+static conv_res ball_axis_bounds(double b0, double b1, double b2, double t)
+{
+    double r = ball_radius(b0, b1, b2);
+    conv_res lh = cbx_c2b(t, r);
+    /*@ assert lh: lh.a <= t - r && t + r <= lh.b; */
+    return lh;
+}
+
+/*@ assigns \nothing;
+    ensures \result != 0 <==> (\is_finite(m0) && \is_finite(m1) && \is_finite(m2)
+                               && \is_finite(t) && sph_dom(m0, m1, m2, t));
+*/
+static int sph_ok(double m0, double m1, double m2, double t)
+{
+    if (!cbx_is_fin(m0) || !cbx_is_fin(m1) || !cbx_is_fin(m2) || !cbx_is_fin(t)) return 0;
+    if (!cbx_cls(m0, m0, 0x1p509, 0x1p509)) return 0;
+    if (!cbx_cls(m1, m1, 0x1p509, 0x1p509)) return 0;
+    if (!cbx_cls(m2, m2, 0x1p509, 0x1p509)) return 0;
+    return t >= -0x1p1018 && t <= 0x1p1018;
+}
+
+/*@ requires \valid(out) && 0 <= i <= 2;
+    assigns out->lo[i], out->hi[i];
+    ensures whole_axis(out, i);
+*/
+static void sph_whole(cbx_box *out, int i)
+{
+    out->lo[i] = cbx_ninf();
+    out->hi[i] = cbx_pinf();
+}
+
+/*@ requires \valid_read(a) && \valid(out) && \separated(a, out);
+    requires 0 <= i <= 2;
+    assigns out->lo[i], out->hi[i];
+    ensures \result != 0 <==> sph_row_dom(a, i);
+    ensures sph_axis(a, out, i);
+*/
+static int sphere_axis(const cbx_affine *a, cbx_box *out, int i)
+{
+    double m0 = a->m[i][0], m1 = a->m[i][1], m2 = a->m[i][2], t = a->m[i][3];
+    if (!sph_ok(m0, m1, m2, t)) {
+        sph_whole(out, i);
+        return 0;
+    }
+    conv_res lh = ball_axis_bounds(m0, m1, m2, t);
+    out->lo[i] = lh.a;
+    out->hi[i] = lh.b;
+    return 1;
+}
+
+/*@ requires \valid_read(a);
+    assigns \nothing;
+    ensures \result != 0 <==> aff_nan(a);
+*/
+static int aff_any_nan(const cbx_affine *a)
+{
+    if (cbx_is_nan(a->m[0][0]) || cbx_is_nan(a->m[0][1]) || cbx_is_nan(a->m[0][2]) || cbx_is_nan(a->m[0][3]))
+        return 1;
+    if (cbx_is_nan(a->m[1][0]) || cbx_is_nan(a->m[1][1]) || cbx_is_nan(a->m[1][2]) || cbx_is_nan(a->m[1][3]))
+        return 1;
+    return cbx_is_nan(a->m[2][0]) || cbx_is_nan(a->m[2][1]) || cbx_is_nan(a->m[2][2])
+           || cbx_is_nan(a->m[2][3]);
+}
+
+cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
+{
+    if (aff_any_nan(a)) {
+        sph_whole(out, 0);
+        sph_whole(out, 1);
+        sph_whole(out, 2);
+        return CBX_EINVAL;
+    }
+    int k0 = sphere_axis(a, out, 0);
+    int k1 = sphere_axis(a, out, 1);
+    int k2 = sphere_axis(a, out, 2);
+    return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
+}
+
+/* An upper bound of |r * d| (exact product), for the ellipsoid's rows. */
+/*@ requires fin: \is_finite(r) && \is_finite(d);
+    requires rng: cls(r, d, 0x1p254, 0x1p254);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures up: \abs(r*d) <= \result <= 0x1p509;
+*/
+static double abs_prod_up(double r, double d)
+{
+    /*@ assert d508: in_dom508(r, d); */
+    double e = cbx_abs(cbx_mul_rn(r, d));
+    double f = cbx_add_rn(e, cbx_mul_rn(e, 0x1p-51));
+    return cbx_add_rn(f, 0x1p-1070);
+}
+
+/* Bounds of center + (r0 d0, r1 d1, r2 d2) . p over the unit ball. */
+/*@ requires fin: \is_finite(r0) && \is_finite(r1) && \is_finite(r2)
+                  && \is_finite(d0) && \is_finite(d1) && \is_finite(d2) && \is_finite(c);
+    requires dom: ell_dom(r0, r1, r2, d0, d1, d2, c);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
+    ensures ball: ball_axis(\result.a, \result.b, r0*d0, r1*d1, r2*d2, c);
+*/
+static conv_res ell_axis_bounds(double r0, double r1, double r2,
+                                double d0, double d1, double d2, double c)
+{
+    double b0 = abs_prod_up(r0, d0);
+    double b1 = abs_prod_up(r1, d1);
+    double b2 = abs_prod_up(r2, d2);
+    double r = ball_radius(b0, b1, b2);
+    /*@ assert sq0: sq_le(r0*d0, b0) && sq_le(r1*d1, b1) && sq_le(r2*d2, b2); */
+    /*@ assert sb: sq_bound(r0*d0, r1*d1, r2*d2, r); */
+    conv_res lh = cbx_c2b(c, r);
+    /*@ assert lh: lh.a <= c - r && c + r <= lh.b; */
+    return lh;
+}
+
+/*@ assigns \nothing;
+    ensures \result != 0 <==> (\is_finite(r0) && \is_finite(r1) && \is_finite(r2)
+      && \is_finite(d0) && \is_finite(d1) && \is_finite(d2) && \is_finite(c)
+      && ell_dom(r0, r1, r2, d0, d1, d2, c));
+*/
+static int ell_ok(double r0, double r1, double r2, double d0, double d1, double d2, double c)
+{
+    if (!cbx_is_fin(r0) || !cbx_is_fin(r1) || !cbx_is_fin(r2)) return 0;
+    if (!cbx_is_fin(d0) || !cbx_is_fin(d1) || !cbx_is_fin(d2) || !cbx_is_fin(c)) return 0;
+    if (!cbx_cls(r0, d0, 0x1p254, 0x1p254)) return 0;
+    if (!cbx_cls(r1, d1, 0x1p254, 0x1p254)) return 0;
+    if (!cbx_cls(r2, d2, 0x1p254, 0x1p254)) return 0;
+    return c >= -0x1p1018 && c <= 0x1p1018;
+}
+
+/*@ requires \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+             && \valid_read(rot + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> ell_nan(center, radii, rot);
+*/
+static int ell_any_nan(const double *center, const double *radii, const double (*rot)[3])
+{
+    if (cbx_is_nan(center[0]) || cbx_is_nan(center[1]) || cbx_is_nan(center[2])) return 1;
+    if (cbx_is_nan(radii[0]) || cbx_is_nan(radii[1]) || cbx_is_nan(radii[2])) return 1;
+    if (cbx_is_nan(rot[0][0]) || cbx_is_nan(rot[0][1]) || cbx_is_nan(rot[0][2])) return 1;
+    if (cbx_is_nan(rot[1][0]) || cbx_is_nan(rot[1][1]) || cbx_is_nan(rot[1][2])) return 1;
+    return cbx_is_nan(rot[2][0]) || cbx_is_nan(rot[2][1]) || cbx_is_nan(rot[2][2]);
+}
+
+typedef struct ell_res { double lo, hi; int ok; } ell_res;
+
+/* One axis of the ellipsoid: the kernel inside the domain, [-inf, +inf]
+ * outside it. */
+/*@ assigns \nothing;
+    ensures ok: \result.ok != 0 <==> (\is_finite(r0) && \is_finite(r1) && \is_finite(r2)
+      && \is_finite(d0) && \is_finite(d1) && \is_finite(d2) && \is_finite(c)
+      && ell_dom(r0, r1, r2, d0, d1, d2, c));
+    ensures in: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
+      && ball_axis(\result.lo, \result.hi, r0*d0, r1*d1, r2*d2, c);
+    ensures out: \result.ok == 0 ==>
+      \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
+*/
+static ell_res ellipsoid_axis(double r0, double r1, double r2,
+                              double d0, double d1, double d2, double c)
+{
+    ell_res e;
+    e.ok = ell_ok(r0, r1, r2, d0, d1, d2, c);
+    if (e.ok) {
+        conv_res lh = ell_axis_bounds(r0, r1, r2, d0, d1, d2, c);
+        e.lo = lh.a;
+        e.hi = lh.b;
+    } else {
+        e.lo = cbx_ninf();
+        e.hi = cbx_pinf();
+    }
+    return e;
+}
+
+cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
+                             const double rot[3][3], cbx_box *out)
+{
+    if (ell_any_nan(center, radii, rot)) {
+        sph_whole(out, 0);
+        sph_whole(out, 1);
+        sph_whole(out, 2);
+        return CBX_EINVAL;
+    }
+    double d0 = radii[0], d1 = radii[1], d2 = radii[2];
+    double c0 = center[0], c1 = center[1], c2 = center[2];
+    double r00 = rot[0][0], r01 = rot[0][1], r02 = rot[0][2];
+    double r10 = rot[1][0], r11 = rot[1][1], r12 = rot[1][2];
+    double r20 = rot[2][0], r21 = rot[2][1], r22 = rot[2][2];
+    ell_res e0 = ellipsoid_axis(r00, r01, r02, d0, d1, d2, c0);
+    ell_res e1 = ellipsoid_axis(r10, r11, r12, d0, d1, d2, c1);
+    ell_res e2 = ellipsoid_axis(r20, r21, r22, d0, d1, d2, c2);
+    out->lo[0] = e0.lo; out->hi[0] = e0.hi;
+    out->lo[1] = e1.lo; out->hi[1] = e1.hi;
+    out->lo[2] = e2.lo; out->hi[2] = e2.hi;
+    /* the proof reads the inputs again in the final state: they are unchanged */
+    /*@ assert same_in: rot[0][0] == r00 && rot[0][1] == r01 && rot[0][2] == r02
+          && rot[1][0] == r10 && rot[1][1] == r11 && rot[1][2] == r12
+          && rot[2][0] == r20 && rot[2][1] == r21 && rot[2][2] == r22
+          && radii[0] == d0 && radii[1] == d1 && radii[2] == d2
+          && center[0] == c0 && center[1] == c1 && center[2] == c2; */
+    /*@ assert same_out: out->lo[0] == e0.lo && out->hi[0] == e0.hi
+          && out->lo[1] == e1.lo && out->hi[1] == e1.hi
+          && out->lo[2] == e2.lo && out->hi[2] == e2.hi; */
+    return (e0.ok && e1.ok && e2.ok) ? CBX_OK : CBX_ERANGE;
+}

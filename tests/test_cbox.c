@@ -1,0 +1,1391 @@
+/*
+ * test_cbox [N] [seed]: the centre/half-diagonal functions against exact
+ * rational arithmetic (GMP).
+ *
+ *   cbx_transform_cbox  (a, (c, h)) -> (c', h')   Arvo's Fig. 2
+ *   cbx_box_to_cbox     [lo, hi]    -> (c, h)
+ *   cbx_cbox_to_box     (c, h)      -> [lo, hi]
+ *
+ * A cbx_cbox (c, h) means the exact real box [c - h, c + h].  For each
+ * function: first a table of hand-picked hard cases (each printed), then N
+ * random cases (default 300000) from a fixed-seed splitmix64 generator.
+ * Every case checks: the status equals the one decided exactly from the
+ * contract in certbox.h, every output field is written (NaN pre-fill),
+ * EINVAL / EMPTY outputs are exactly as specified, out-of-domain axes are
+ * exactly the whole line, in-domain axes are finite and contain the exact
+ * image (exact comparison on integers scaled by 2^2148), the inputs are not
+ * modified.  Tightness is measured in units of u*S + eta (u = 2^-53,
+ * eta = 2^-1074, S the scale of each function, below), printed as max and
+ * mean.  Check "sanity<=64": an end more than 64 units out fails on axes
+ * with u*S >= 2^-1000.  Check "tiny-abs": below that scale absolute terms
+ * of the widening (2^-1065, ...) dominate, and an end fails only when its
+ * gap is above both 64 units and 2^-1000.  Statistics keep the axes with
+ * u*S < 2^-1000 apart.
+ *
+ * transform_cbox also checks the 8 corners c_j -+ h_j with plain mpq_t
+ * (hard cases and every CORNER_EVERY-th random case), that the corners'
+ * min / max equal the fixed-point C - H / C + H, and the tightness of the
+ * contract in specs/cbx_spec.h (cbox_tight): each end within
+ * 12 u S + 2^-1065 of the exact end.
+ *
+ * Round trips: box -> cbox -> box contains the original box, and
+ * cbox -> box -> cbox contains the original cbox (exactly), whenever both
+ * steps return CBX_OK.
+ *
+ * The last line is "N passed, M failed" (cases); exit status 1 on failure.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <float.h>
+#include <math.h>
+#include <time.h>
+
+#include "certbox.h"
+#include "exact_util.h"
+
+/* Domain of the conversions: |input| <= 2^CONV_EMAX.  certbox.h and
+ * conv_dom in specs/cbx_spec.h say 2^1019 (an earlier draft said 2^1020). */
+#ifndef CONV_EMAX
+#define CONV_EMAX 1019
+#endif
+/* 2^CONV_EMAX and one ulp above it, as constant expressions (tables) */
+#define XPOW_(e) 0x1p##e
+#define XPOW(e) XPOW_(e)
+#define CLIM XPOW(CONV_EMAX)
+#define CLIMU (CLIM * 0x1.0000000000001p0)
+#ifndef CORNER_EVERY
+#define CORNER_EVERY 50
+#endif
+#define SANITY 64.0
+#define MAX_FAIL_LOGS 20
+
+#define INF HUGE_VAL
+
+/* ---------------------------------------------------------------------- */
+/* Checks, verdicts, statistics                                           */
+/* ---------------------------------------------------------------------- */
+
+enum {
+    F_STATUS,    /* status differs from the exactly decided one          */
+    F_UNSET,     /* NaN pre-fill left in the output                      */
+    F_SPECIAL,   /* EINVAL / EMPTY output not exactly as specified       */
+    F_OOB,       /* out-of-domain axis not exactly the whole line        */
+    F_FINITE,    /* in-domain axis not finite (or lo > hi)               */
+    F_CONTAIN,   /* the exact image is not contained (exact)             */
+    F_SPEC,      /* beyond 12 u S + 2^-1065 (cbox_tight, transform only) */
+    F_SANITY,    /* > 64 units where u S >= 2^-1000                      */
+    F_TINYABS,   /* gap > max(64 (u S + eta), 2^-1000) where u S < 2^-1000 */
+    F_CORNER,    /* an mpq corner image is outside the output            */
+    F_CROSS,     /* mpq corner min / max != fixed-point C -+ H           */
+    F_ROUND,     /* round trip does not contain the original             */
+    F_INPUT,     /* the call modified its input                          */
+    NF
+};
+static const char *const f_name[NF] = {
+    "status", "out-set", "special-out", "oob-axes", "finite", "containment",
+    "spec-tight", "sanity<=64", "tiny-abs", "corners", "cross-CH", "round-trip",
+    "inputs"
+};
+static const char *const f_unit[NF] = {
+    "cases", "cases", "cases", "axes", "axes", "axes",
+    "axes", "axes", "axes", "axes", "axes", "cases", "cases"
+};
+
+typedef struct verdict {
+    cbx_status expected, got;
+    int failed;
+    int flag[NF], applied[NF];
+    char why[200];
+} verdict;
+
+typedef struct exstat {      /* excess of in-domain axes, in units        */
+    long n, n_tiny, n_exact, over8;
+    double max, sum, max_tiny;
+} exstat;
+
+typedef struct group {
+    const char *name;
+    long cases, failed;
+    long status_seen[4];
+    long applied[NF], fails[NF];
+    exstat lo, hi, main;     /* main: the quantity the sanity bound uses  */
+    const char *main_what;
+    long rt_n, rt_skipped;   /* round trips checked / second step not OK  */
+    double rt_max;           /* round-trip excess, units                  */
+} group;
+
+static long fail_logs;
+
+static void v_init(verdict *v) { memset(v, 0, sizeof *v); }
+
+static void v_fail(verdict *v, int f, const char *why)
+{
+    v->flag[f]++;
+    if (!v->failed) {
+        strncpy(v->why, why, sizeof v->why - 1);
+        v->why[sizeof v->why - 1] = '\0';
+    }
+    v->failed = 1;
+}
+
+static void ex_add(exstat *e, double u, int tiny, int exact)
+{
+    if (tiny) {
+        if (e->n_tiny == 0 || u > e->max_tiny) e->max_tiny = u;
+        e->n_tiny++;
+        return;
+    }
+    if (e->n == 0 || u > e->max) e->max = u;
+    e->sum += u;
+    e->n++;
+    e->n_exact += exact;
+    e->over8 += u > 8;
+}
+
+static void g_init(group *g, const char *name, const char *main_what)
+{
+    memset(g, 0, sizeof *g);
+    g->name = name;
+    g->main_what = main_what;
+}
+
+static void g_add(group *g, const verdict *v)
+{
+    int f, si = xu_status_index(v->expected);
+    g->cases++;
+    g->failed += v->failed;
+    if (si >= 0) g->status_seen[si]++;
+    for (f = 0; f < NF; f++) {
+        g->applied[f] += v->applied[f];
+        g->fails[f] += v->flag[f];
+    }
+}
+
+static void ex_print(const char *what, const exstat *e)
+{
+    if (e->n)
+        printf("  %-11s max %9.4f  mean %7.4f  (%ld axes, %ld exactly 0, %ld above 8)\n",
+               what, e->max, e->sum / (double)e->n, e->n, e->n_exact, e->over8);
+    else
+        printf("  %-11s (no axis with u*S >= 2^-1000)\n", what);
+    if (e->n_tiny)
+        printf("  %-11s u*S < 2^-1000: %ld axes, max %.4g units (there only "
+               "gap <= 2^-1000 is required)\n", "", e->n_tiny, e->max_tiny);
+}
+
+static void g_print(const group *g)
+{
+    int f;
+    printf("== %s: %ld cases (expected OK %ld, EMPTY %ld, EINVAL %ld, ERANGE %ld), "
+           "%ld failed\n", g->name, g->cases, g->status_seen[0], g->status_seen[1],
+           g->status_seen[2], g->status_seen[3], g->failed);
+    for (f = 0; f < NF; f++)
+        if (g->applied[f])
+            printf("  check %-12s %9ld %-5s checked, %6ld failed\n", f_name[f],
+                   g->applied[f], f_unit[f], g->fails[f]);
+    printf("  excess in units of %s:\n", g->main_what);
+    ex_print("lower end", &g->lo);
+    ex_print("upper end", &g->hi);
+    ex_print("bounded qty", &g->main);
+    if (g->rt_n || g->rt_skipped)
+        printf("  round trips: %ld checked, %ld skipped (2nd step not CBX_OK), "
+               "max widening %.4f units\n", g->rt_n, g->rt_skipped, g->rt_max);
+}
+
+/* ---------------------------------------------------------------------- */
+/* Exact context                                                          */
+/* ---------------------------------------------------------------------- */
+
+typedef struct ctx {
+    xu_exact x;
+    mpz_t C, H, S, p, olo, ohi, elo, ehi, g, t;
+    mpq_t q, qa, qb, qlo, qhi, qmin, qmax;
+} ctx;
+
+static void ctx_init(ctx *k)
+{
+    xu_init(&k->x);
+    mpz_inits(k->C, k->H, k->S, k->p, k->olo, k->ohi, k->elo, k->ehi, k->g,
+              k->t, (mpz_ptr)0);
+    mpq_inits(k->q, k->qa, k->qb, k->qlo, k->qhi, k->qmin, k->qmax, (mpq_ptr)0);
+}
+
+static void ctx_clear(ctx *k)
+{
+    xu_clear(&k->x);
+    mpz_clears(k->C, k->H, k->S, k->p, k->olo, k->ohi, k->elo, k->ehi, k->g,
+               k->t, (mpz_ptr)0);
+    mpq_clears(k->q, k->qa, k->qb, k->qlo, k->qhi, k->qmin, k->qmax, (mpq_ptr)0);
+}
+
+static int is_pinf(double d) { return d > 0 && isinf(d); }
+static int is_ninf(double d) { return d < 0 && isinf(d); }
+
+/* k->olo, k->ohi = c -+ h, scaled */
+static void cbox_ends(ctx *k, double c, double h)
+{
+    xu_scaled_d(&k->x, k->t, c);
+    xu_scaled_d(&k->x, k->g, h);
+    mpz_sub(k->olo, k->t, k->g);
+    mpz_add(k->ohi, k->t, k->g);
+}
+
+/* One side: gap (scaled, >= 0 when contained) against scale S. Returns the
+ * excess in units; sets *sanity_bad. */
+static double side_units(ctx *k, const mpz_t gap, const mpz_t S, int tiny,
+                         int *sanity_bad)
+{
+    double u = xu_units(&k->x, gap, S);
+    /* gap > max(64 (u S + eta), 2^-1000); for u S >= 2^-1000 the first
+     * term decides, below it the absolute 2^-1000 does */
+    (void)tiny;
+    *sanity_bad = u > SANITY && xu_gap_above_tiny_cap(gap);
+    return u;
+}
+
+/* gap 2^53 <= 12 S + 2^(XU_SHIFT - 1065 + 53): cbox_tight of cbx_spec.h */
+static int within_spec(ctx *k, const mpz_t gap, const mpz_t S)
+{
+    mpz_mul_2exp(k->p, gap, 53);
+    mpz_set_ui(k->t, 1);
+    mpz_mul_2exp(k->t, k->t, XU_SHIFT - 1065 + 53);
+    mpz_addmul_ui(k->t, S, 12);
+    return mpz_cmp(k->p, k->t) <= 0;
+}
+
+/* ---------------------------------------------------------------------- */
+/* cbx_transform_cbox: oracle and checks                                  */
+/* ---------------------------------------------------------------------- */
+
+static cbx_status tc_expected(const cbx_affine *a, const cbx_cbox *in, int *oob)
+{
+    int i;
+    *oob = 0;
+    if (xu_cbox_has_nan(a, in)) return CBX_EINVAL;
+    if (xu_cbox_is_empty(in)) return CBX_EMPTY;
+    for (i = 0; i < 3; i++)
+        if (!xu_cbox_row_in_domain(a, in, i)) *oob |= 1 << i;
+    return *oob ? CBX_ERANGE : CBX_OK;
+}
+
+/* C = t + sum m_j c_j, H = sum |m_j h_j|, S = |t| + sum |m_j c_j| + H */
+static void tc_row(ctx *k, const cbx_affine *a, const cbx_cbox *in, int i)
+{
+    int j;
+    xu_scaled_d(&k->x, k->C, a->m[i][3]);
+    mpz_abs(k->S, k->C);
+    mpz_set_ui(k->H, 0);
+    for (j = 0; j < 3; j++) {
+        xu_scaled_mul(&k->x, k->p, a->m[i][j], in->c[j]);
+        mpz_add(k->C, k->C, k->p);
+        if (mpz_sgn(k->p) < 0) mpz_sub(k->S, k->S, k->p);
+        else mpz_add(k->S, k->S, k->p);
+        xu_scaled_mul(&k->x, k->p, a->m[i][j], in->h[j]);
+        if (mpz_sgn(k->p) < 0) mpz_sub(k->H, k->H, k->p);
+        else mpz_add(k->H, k->H, k->p);
+    }
+    mpz_add(k->S, k->S, k->H);
+    mpz_sub(k->elo, k->C, k->H);
+    mpz_add(k->ehi, k->C, k->H);
+}
+
+/* mpq image of row i at corner cn (bit j: c_j + h_j, else c_j - h_j) */
+static void tc_corner_q(ctx *k, mpq_t r, const cbx_affine *a,
+                        const cbx_cbox *in, int i, unsigned cn)
+{
+    int j;
+    mpq_set_d(r, a->m[i][3]);
+    for (j = 0; j < 3; j++) {
+        mpq_set_d(k->qa, in->c[j]);
+        mpq_set_d(k->qb, in->h[j]);
+        if ((cn >> j) & 1u) mpq_add(k->qa, k->qa, k->qb);
+        else mpq_sub(k->qa, k->qa, k->qb);
+        mpq_set_d(k->qb, a->m[i][j]);
+        mpq_mul(k->qa, k->qa, k->qb);
+        mpq_add(r, r, k->qa);
+    }
+}
+
+static void tc_corners(ctx *k, verdict *v, const cbx_affine *a,
+                       const cbx_cbox *in, const cbx_cbox *out, int i)
+{
+    unsigned cn;
+    int bad = 0;
+    char why[120];
+    mpq_set_d(k->qlo, out->c[i]);
+    mpq_set_d(k->qa, out->h[i]);
+    mpq_add(k->qhi, k->qlo, k->qa);
+    mpq_sub(k->qlo, k->qlo, k->qa);
+    for (cn = 0; cn < 8; cn++) {
+        tc_corner_q(k, k->q, a, in, i, cn);
+        if (mpq_cmp(k->q, k->qlo) < 0 || mpq_cmp(k->q, k->qhi) > 0) bad++;
+        if (cn == 0 || mpq_cmp(k->q, k->qmin) < 0) mpq_set(k->qmin, k->q);
+        if (cn == 0 || mpq_cmp(k->q, k->qmax) > 0) mpq_set(k->qmax, k->q);
+    }
+    v->applied[F_CORNER]++;
+    if (bad) {
+        snprintf(why, sizeof why, "axis %d: %d corner images outside (mpq)", i, bad);
+        v_fail(v, F_CORNER, why);
+    }
+    v->applied[F_CROSS]++;
+    xu_scaled_to_q(k->qa, k->elo);
+    xu_scaled_to_q(k->qb, k->ehi);
+    if (!mpq_equal(k->qa, k->qmin) || !mpq_equal(k->qb, k->qmax)) {
+        snprintf(why, sizeof why, "axis %d: mpq corners != fixed-point C -+ H", i);
+        v_fail(v, F_CROSS, why);
+    }
+}
+
+static void check_cwhole_axis(verdict *v, const cbx_cbox *o, int i, int flag,
+                              const char *what)
+{
+    if (!(o->c[i] == 0 && is_pinf(o->h[i]))) v_fail(v, flag, what);
+}
+
+/* EINVAL (whole) / EMPTY output of a cbox-valued function */
+static void check_cspecial(verdict *v, const cbx_cbox *o, int whole)
+{
+    int i, ok = 1;
+    v->applied[F_SPECIAL]++;
+    for (i = 0; i < 3; i++)
+        ok &= o->c[i] == 0 && (whole ? is_pinf(o->h[i]) : is_ninf(o->h[i]));
+    if (!ok)
+        v_fail(v, F_SPECIAL, whole ? "EINVAL: out is not c = 0, h = +inf"
+                                   : "EMPTY: out is not c = 0, h = -inf");
+}
+
+static int check_unset_c(verdict *v, const cbx_cbox *o)
+{
+    int i;
+    v->applied[F_UNSET]++;
+    for (i = 0; i < 3; i++)
+        if (xu_is_nan(o->c[i]) || xu_is_nan(o->h[i])) {
+            v_fail(v, F_UNSET, "NaN left in out (field not written)");
+            return 1;
+        }
+    return 0;
+}
+
+static void check_status(verdict *v)
+{
+    char why[96];
+    v->applied[F_STATUS]++;
+    if (v->got != v->expected) {
+        snprintf(why, sizeof why, "status %s (%d), expected %s",
+                 cbx_status_name(v->got), (int)v->got, cbx_status_name(v->expected));
+        v_fail(v, F_STATUS, why);
+    }
+}
+
+/* Run one transform case; adds the excess to g; returns v->failed. */
+static int tc_run(ctx *k, group *g, const cbx_affine *a, const cbx_cbox *in,
+                  cbx_cbox *out, int corners, verdict *v, double *mx)
+{
+    cbx_affine a0 = *a;
+    cbx_cbox in0 = *in;
+    int i, oob;
+    char why[160];
+
+    for (i = 0; i < 3; i++) out->c[i] = out->h[i] = NAN;
+    v_init(v);
+    v->got = cbx_transform_cbox(a, in, out);
+    v->expected = tc_expected(a, in, &oob);
+    *mx = 0;
+    v->applied[F_INPUT]++;
+    if (memcmp(&a0, a, sizeof a0) || memcmp(&in0, in, sizeof in0))
+        v_fail(v, F_INPUT, "the call modified its inputs");
+    check_status(v);
+    check_unset_c(v, out);
+    if (v->expected == CBX_EINVAL || v->expected == CBX_EMPTY) {
+        check_cspecial(v, out, v->expected == CBX_EINVAL);
+        return v->failed;
+    }
+    for (i = 0; i < 3; i++) {
+        int tiny, bad_lo, bad_hi;
+        double ulo, uhi;
+        if (oob & (1 << i)) {
+            v->applied[F_OOB]++;
+            snprintf(why, sizeof why, "axis %d out of domain but not c = 0, h = +inf", i);
+            check_cwhole_axis(v, out, i, F_OOB, why);
+            continue;
+        }
+        v->applied[F_FINITE]++;
+        if (!isfinite(out->c[i]) || !isfinite(out->h[i])) {
+            snprintf(why, sizeof why, "axis %d in domain but out c = %g, h = %g", i,
+                     out->c[i], out->h[i]);
+            v_fail(v, F_FINITE, why);
+            continue;
+        }
+        tc_row(k, a, in, i);
+        cbox_ends(k, out->c[i], out->h[i]);
+        mpz_sub(k->olo, k->elo, k->olo);   /* gap below: (C - H) - (c - h) */
+        mpz_sub(k->ohi, k->ohi, k->ehi);   /* gap above: (c + h) - (C + H) */
+        tiny = xu_scale_tiny(k->S);
+        ulo = side_units(k, k->olo, k->S, tiny, &bad_lo);
+        uhi = side_units(k, k->ohi, k->S, tiny, &bad_hi);
+        v->applied[F_CONTAIN]++;
+        if (mpz_sgn(k->olo) < 0 || mpz_sgn(k->ohi) < 0) {
+            snprintf(why, sizeof why, "axis %d: not contained (excess lo %.3g, hi %.3g)",
+                     i, ulo, uhi);
+            v_fail(v, F_CONTAIN, why);
+        }
+        v->applied[F_SPEC]++;
+        if (!within_spec(k, k->olo, k->S) || !within_spec(k, k->ohi, k->S)) {
+            snprintf(why, sizeof why, "axis %d: beyond 12uS+2^-1065 (excess lo %.3g, hi %.3g)",
+                     i, ulo, uhi);
+            v_fail(v, F_SPEC, why);
+        }
+        v->applied[tiny ? F_TINYABS : F_SANITY]++;
+        if (bad_lo || bad_hi) {
+            snprintf(why, sizeof why, "axis %d: sanity bound (excess lo %.3g, hi %.3g%s)",
+                     i, ulo, uhi, tiny ? ", tiny scale: gap > 2^-1000" : "");
+            v_fail(v, tiny ? F_TINYABS : F_SANITY, why);
+        }
+        ex_add(&g->lo, ulo, tiny, mpz_sgn(k->olo) == 0);
+        ex_add(&g->hi, uhi, tiny, mpz_sgn(k->ohi) == 0);
+        ex_add(&g->main, ulo > uhi ? ulo : uhi, tiny,
+               mpz_sgn(k->olo) == 0 && mpz_sgn(k->ohi) == 0);
+        if (!tiny && ulo > *mx) *mx = ulo;
+        if (!tiny && uhi > *mx) *mx = uhi;
+        if (corners) tc_corners(k, v, a, in, out, i);
+    }
+    return v->failed;
+}
+
+/* ---------------------------------------------------------------------- */
+/* Conversions: oracle and checks                                          */
+/* ---------------------------------------------------------------------- */
+
+static int conv_ok(double x) { return fabs(x) <= ldexp(1.0, CONV_EMAX); }
+
+static int box_has_nan(const cbx_box *b)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        if (xu_is_nan(b->lo[j]) || xu_is_nan(b->hi[j])) return 1;
+    return 0;
+}
+
+static cbx_status b2c_expected(const cbx_box *in, int *oob)
+{
+    int j;
+    *oob = 0;
+    if (box_has_nan(in)) return CBX_EINVAL;
+    if (xu_is_empty(in)) return CBX_EMPTY;
+    for (j = 0; j < 3; j++)
+        if (!conv_ok(in->lo[j]) || !conv_ok(in->hi[j])) *oob |= 1 << j;
+    return *oob ? CBX_ERANGE : CBX_OK;
+}
+
+static cbx_status c2b_expected(const cbx_cbox *in, int *oob)
+{
+    int j;
+    *oob = 0;
+    if (xu_cbox_has_nan(NULL, in)) return CBX_EINVAL;
+    if (xu_cbox_is_empty(in)) return CBX_EMPTY;
+    for (j = 0; j < 3; j++)
+        if (!conv_ok(in->c[j]) || !conv_ok(in->h[j])) *oob |= 1 << j;
+    return *oob ? CBX_ERANGE : CBX_OK;
+}
+
+/* k->S = max(|lo|, |hi|) scaled */
+static void abs_max_scaled(ctx *k, double p, double q)
+{
+    double m = fabs(p) > fabs(q) ? fabs(p) : fabs(q);
+    xu_scaled_d(&k->x, k->S, m);
+}
+
+static int b2c_run(ctx *k, group *g, const cbx_box *in, cbx_cbox *out,
+                   verdict *v, double *mx)
+{
+    cbx_box in0 = *in;
+    int i, oob;
+    char why[160];
+
+    for (i = 0; i < 3; i++) out->c[i] = out->h[i] = NAN;
+    v_init(v);
+    v->got = cbx_box_to_cbox(in, out);
+    v->expected = b2c_expected(in, &oob);
+    *mx = 0;
+    v->applied[F_INPUT]++;
+    if (memcmp(&in0, in, sizeof in0)) v_fail(v, F_INPUT, "the call modified its input");
+    check_status(v);
+    check_unset_c(v, out);
+    if (v->expected == CBX_EINVAL || v->expected == CBX_EMPTY) {
+        check_cspecial(v, out, v->expected == CBX_EINVAL);
+        return v->failed;
+    }
+    for (i = 0; i < 3; i++) {
+        int tiny, bad_lo, bad_hi, bad;
+        double ulo, uhi, avg;
+        if (oob & (1 << i)) {
+            v->applied[F_OOB]++;
+            snprintf(why, sizeof why, "axis %d out of domain but not c = 0, h = +inf", i);
+            check_cwhole_axis(v, out, i, F_OOB, why);
+            continue;
+        }
+        v->applied[F_FINITE]++;
+        if (!isfinite(out->c[i]) || !isfinite(out->h[i])) {
+            snprintf(why, sizeof why, "axis %d in domain but out c = %g, h = %g", i,
+                     out->c[i], out->h[i]);
+            v_fail(v, F_FINITE, why);
+            continue;
+        }
+        cbox_ends(k, out->c[i], out->h[i]);
+        xu_scaled_d(&k->x, k->elo, in->lo[i]);
+        xu_scaled_d(&k->x, k->ehi, in->hi[i]);
+        mpz_sub(k->olo, k->elo, k->olo);   /* lo - (c - h) */
+        mpz_sub(k->ohi, k->ohi, k->ehi);   /* (c + h) - hi */
+        abs_max_scaled(k, in->lo[i], in->hi[i]);
+        tiny = xu_scale_tiny(k->S);
+        ulo = side_units(k, k->olo, k->S, tiny, &bad_lo);
+        uhi = side_units(k, k->ohi, k->S, tiny, &bad_hi);
+        /* the brief's measure: ((c+h) - hi + lo - (c-h)) / 2 */
+        mpz_add(k->g, k->olo, k->ohi);
+        mpz_tdiv_q_2exp(k->g, k->g, 1);
+        avg = side_units(k, k->g, k->S, tiny, &bad);
+        v->applied[F_CONTAIN]++;
+        if (mpz_sgn(k->olo) < 0 || mpz_sgn(k->ohi) < 0) {
+            snprintf(why, sizeof why, "axis %d: [c-h, c+h] does not contain [lo, hi] "
+                     "(excess lo %.3g, hi %.3g)", i, ulo, uhi);
+            v_fail(v, F_CONTAIN, why);
+        }
+        v->applied[tiny ? F_TINYABS : F_SANITY]++;
+        if (bad) {
+            snprintf(why, sizeof why, "axis %d: sanity bound (mean excess %.3g%s)", i,
+                     avg, tiny ? ", tiny scale: gap > 2^-1000" : "");
+            v_fail(v, tiny ? F_TINYABS : F_SANITY, why);
+        }
+        ex_add(&g->lo, ulo, tiny, mpz_sgn(k->olo) == 0);
+        ex_add(&g->hi, uhi, tiny, mpz_sgn(k->ohi) == 0);
+        ex_add(&g->main, avg, tiny, mpz_sgn(k->g) == 0);
+        if (!tiny && avg > *mx) *mx = avg;
+    }
+    return v->failed;
+}
+
+static int c2b_run(ctx *k, group *g, const cbx_cbox *in, cbx_box *out,
+                   verdict *v, double *mx)
+{
+    cbx_cbox in0 = *in;
+    int i, oob;
+    char why[160];
+
+    for (i = 0; i < 3; i++) out->lo[i] = out->hi[i] = NAN;
+    v_init(v);
+    v->got = cbx_cbox_to_box(in, out);
+    v->expected = c2b_expected(in, &oob);
+    *mx = 0;
+    v->applied[F_INPUT]++;
+    if (memcmp(&in0, in, sizeof in0)) v_fail(v, F_INPUT, "the call modified its input");
+    check_status(v);
+    v->applied[F_UNSET]++;
+    for (i = 0; i < 3; i++)
+        if (xu_is_nan(out->lo[i]) || xu_is_nan(out->hi[i])) {
+            v_fail(v, F_UNSET, "NaN left in out (field not written)");
+            break;
+        }
+    if (v->expected == CBX_EINVAL || v->expected == CBX_EMPTY) {
+        int whole = v->expected == CBX_EINVAL, ok = 1;
+        v->applied[F_SPECIAL]++;
+        for (i = 0; i < 3; i++)
+            ok &= whole ? is_ninf(out->lo[i]) && is_pinf(out->hi[i])
+                        : is_pinf(out->lo[i]) && is_ninf(out->hi[i]);
+        if (!ok)
+            v_fail(v, F_SPECIAL, whole ? "EINVAL: out is not [-inf,+inf]^3"
+                                       : "EMPTY: out is not lo = +inf, hi = -inf");
+        return v->failed;
+    }
+    for (i = 0; i < 3; i++) {
+        int tiny, bad_lo, bad_hi;
+        double ulo, uhi;
+        if (oob & (1 << i)) {
+            v->applied[F_OOB]++;
+            if (!is_ninf(out->lo[i]) || !is_pinf(out->hi[i])) {
+                snprintf(why, sizeof why, "axis %d out of domain but not [-inf,+inf]", i);
+                v_fail(v, F_OOB, why);
+            }
+            continue;
+        }
+        v->applied[F_FINITE]++;
+        if (!isfinite(out->lo[i]) || !isfinite(out->hi[i]) || out->lo[i] > out->hi[i]) {
+            snprintf(why, sizeof why, "axis %d in domain but out = [%g, %g]", i,
+                     out->lo[i], out->hi[i]);
+            v_fail(v, F_FINITE, why);
+            continue;
+        }
+        cbox_ends(k, in->c[i], in->h[i]);
+        xu_scaled_d(&k->x, k->elo, out->lo[i]);
+        xu_scaled_d(&k->x, k->ehi, out->hi[i]);
+        mpz_sub(k->olo, k->olo, k->elo);   /* (c - h) - lo */
+        mpz_sub(k->ohi, k->ehi, k->ohi);   /* hi - (c + h) */
+        /* S = |c| + h */
+        xu_scaled_d(&k->x, k->S, fabs(in->c[i]));
+        xu_scaled_d(&k->x, k->g, in->h[i]);
+        mpz_add(k->S, k->S, k->g);
+        tiny = xu_scale_tiny(k->S);
+        ulo = side_units(k, k->olo, k->S, tiny, &bad_lo);
+        uhi = side_units(k, k->ohi, k->S, tiny, &bad_hi);
+        v->applied[F_CONTAIN]++;
+        if (mpz_sgn(k->olo) < 0 || mpz_sgn(k->ohi) < 0) {
+            snprintf(why, sizeof why, "axis %d: [lo, hi] does not contain [c-h, c+h] "
+                     "(excess lo %.3g, hi %.3g)", i, ulo, uhi);
+            v_fail(v, F_CONTAIN, why);
+        }
+        v->applied[tiny ? F_TINYABS : F_SANITY]++;
+        if (bad_lo || bad_hi) {
+            snprintf(why, sizeof why, "axis %d: sanity bound (excess lo %.3g, hi %.3g%s)",
+                     i, ulo, uhi, tiny ? ", tiny scale: gap > 2^-1000" : "");
+            v_fail(v, tiny ? F_TINYABS : F_SANITY, why);
+        }
+        ex_add(&g->lo, ulo, tiny, mpz_sgn(k->olo) == 0);
+        ex_add(&g->hi, uhi, tiny, mpz_sgn(k->ohi) == 0);
+        ex_add(&g->main, ulo > uhi ? ulo : uhi, tiny,
+               mpz_sgn(k->olo) == 0 && mpz_sgn(k->ohi) == 0);
+        if (!tiny && ulo > *mx) *mx = ulo;
+        if (!tiny && uhi > *mx) *mx = uhi;
+    }
+    return v->failed;
+}
+
+/* box -> cbox -> box must contain the box (b2c OK assumed by the caller). */
+static void roundtrip_box(ctx *k, group *g, const cbx_box *in,
+                          const cbx_cbox *cb, verdict *v)
+{
+    cbx_box back;
+    int j;
+    cbx_status s = cbx_cbox_to_box(cb, &back);
+    if (s != CBX_OK) { g->rt_skipped++; return; }
+    g->rt_n++;
+    v->applied[F_ROUND]++;
+    for (j = 0; j < 3; j++) {
+        if (!(back.lo[j] <= in->lo[j] && in->hi[j] <= back.hi[j])) {
+            v_fail(v, F_ROUND, "box -> cbox -> box does not contain the box");
+            return;
+        }
+        /* widening in units of u max(|lo|,|hi|) + eta */
+        abs_max_scaled(k, in->lo[j], in->hi[j]);
+        if (!xu_scale_tiny(k->S)) {
+            double u;
+            xu_scaled_d(&k->x, k->olo, in->lo[j]);
+            xu_scaled_d(&k->x, k->g, back.lo[j]);
+            mpz_sub(k->olo, k->olo, k->g);
+            u = xu_units(&k->x, k->olo, k->S);
+            if (u > g->rt_max) g->rt_max = u;
+            xu_scaled_d(&k->x, k->ohi, in->hi[j]);
+            xu_scaled_d(&k->x, k->g, back.hi[j]);
+            mpz_sub(k->ohi, k->g, k->ohi);
+            u = xu_units(&k->x, k->ohi, k->S);
+            if (u > g->rt_max) g->rt_max = u;
+        }
+    }
+}
+
+/* cbox -> box -> cbox must contain the cbox (exactly). */
+static void roundtrip_cbox(ctx *k, group *g, const cbx_cbox *in,
+                           const cbx_box *bx, verdict *v)
+{
+    cbx_cbox back;
+    int j;
+    cbx_status s = cbx_box_to_cbox(bx, &back);
+    if (s != CBX_OK) { g->rt_skipped++; return; }
+    g->rt_n++;
+    v->applied[F_ROUND]++;
+    for (j = 0; j < 3; j++) {
+        cbox_ends(k, in->c[j], in->h[j]);
+        mpz_set(k->elo, k->olo);
+        mpz_set(k->ehi, k->ohi);
+        cbox_ends(k, back.c[j], back.h[j]);
+        if (mpz_cmp(k->olo, k->elo) > 0 || mpz_cmp(k->ohi, k->ehi) < 0) {
+            v_fail(v, F_ROUND, "cbox -> box -> cbox does not contain the cbox");
+            return;
+        }
+        xu_scaled_d(&k->x, k->S, fabs(in->c[j]));
+        xu_scaled_d(&k->x, k->g, in->h[j]);
+        mpz_add(k->S, k->S, k->g);
+        if (!xu_scale_tiny(k->S)) {
+            double u;
+            mpz_sub(k->g, k->elo, k->olo);
+            u = xu_units(&k->x, k->g, k->S);
+            if (u > g->rt_max) g->rt_max = u;
+            mpz_sub(k->g, k->ohi, k->ehi);
+            u = xu_units(&k->x, k->g, k->S);
+            if (u > g->rt_max) g->rt_max = u;
+        }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* Printing reproducers (hex)                                             */
+/* ---------------------------------------------------------------------- */
+
+static void print_cbox(const char *label, const cbx_cbox *b)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        printf("  %s[%d]: c = %a, h = %a   (%.17g, %.17g)\n", label, j, b->c[j],
+               b->h[j], b->c[j], b->h[j]);
+}
+
+static void print_affine(const cbx_affine *a)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        printf("  m[%d] = {%a, %a, %a | %a}\n", i, a->m[i][0], a->m[i][1],
+               a->m[i][2], a->m[i][3]);
+}
+
+static int log_head(const char *what, long id, const verdict *v)
+{
+    if (fail_logs++ >= MAX_FAIL_LOGS) return 0;
+    printf("FAIL %s %ld: %s (status %s, expected %s)\n", what, id, v->why,
+           cbx_status_name(v->got), cbx_status_name(v->expected));
+    return 1;
+}
+
+/* ---------------------------------------------------------------------- */
+/* Hard cases                                                             */
+/* ---------------------------------------------------------------------- */
+
+#define ROW(a, b, c, t) { a, b, c, t }
+#define MAT(r0, r1, r2) { { r0, r1, r2 } }
+/* cbox per axis: (c0, h0, c1, h1, c2, h2) */
+#define CB(c0, h0, c1, h1, c2, h2) { { c0, c1, c2 }, { h0, h1, h2 } }
+/* box per axis: (lo0, hi0, lo1, hi1, lo2, hi2) */
+#define BOX(l0, h0, l1, h1, l2, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
+#define ID3 MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 1, 0))
+
+/* 2^509 (1 + 2^-52), 2^1018 (1 + 2^-52), 2^CONV_EMAX (1 + 2^-52) */
+#define P509U 0x1.0000000000001p509
+#define P1018U 0x1.0000000000001p1018
+#define P1019U CLIMU
+
+typedef struct tc_case {
+    const char *name;
+    cbx_affine a;
+    cbx_cbox in;
+    cbx_status expect;
+    int oob;
+} tc_case;
+
+static const tc_case tc_hard[] = {
+    /* identity on the cbox (0, 1)^3 = [-1, 1]^3 */
+    { "identity, c = 0, h = 1", ID3, CB(0, 1, 0, 1, 0, 1), CBX_OK, 0 },
+    /* identity on a point cbox (h = 0): the image is a point */
+    { "identity, point cbox (h = 0)", ID3, CB(1.5, 0, -2, 0, 3, 0), CBX_OK, 0 },
+    /* h = -0.0 is not < 0: a point, not empty; -0.0 entries and t */
+    { "signed permutation with -0.0, h = -0.0",
+      MAT(ROW(-0.0, 1, -0.0, -0.0), ROW(-0.0, -0.0, -1, 0), ROW(1, -0.0, 0, -0.0)),
+      CB(-0.0, -0.0, 2, 0.5, -0.0, 0.0), CBX_OK, 0 },
+    /* all zeros, every sign: image exactly {0}, S = 0 */
+    { "all-zero map, signed zeros",
+      MAT(ROW(-0.0, -0.0, -0.0, -0.0), ROW(0.0, -0.0, 0.0, 0.0), ROW(-0.0, 0.0, -0.0, 0.0)),
+      CB(-0.0, 0.0, 3, 1, -5, -0.0), CBX_OK, 0 },
+    /* rank deficient: row 1 is zero (image of row 1 is the point t = 5) */
+    { "zero row (rank 2) with t = 5",
+      MAT(ROW(1, 2, 3, 0), ROW(0, 0, 0, 5), ROW(-1, 0.5, 2, -1)),
+      CB(0.1, 0.2, -0.3, 0.4, 0.5, 0.6), CBX_OK, 0 },
+    /* rank 1: every row a multiple of (1, 2, 3) */
+    { "rank 1 map",
+      MAT(ROW(1, 2, 3, 0), ROW(-2, -4, -6, 1), ROW(0.1, 0.2, 0.30000000000000004, 2)),
+      CB(1e3, 1e-3, -7, 0.25, 0.1, 0.1), CBX_OK, 0 },
+    /* tiny-angle rotations: cos rounds to 1.0, sin to the angle */
+    { "rotation 1e-8 about z",
+      MAT(ROW(1.0, -1e-8, 0, 0), ROW(1e-8, 1.0, 0, 0), ROW(0, 0, 1, 0)),
+      CB(0, 1e6, 0, 1, 0, 0), CBX_OK, 0 },
+    { "rotation 1e-15 about x, translated",
+      MAT(ROW(1, 0, 0, 5), ROW(0, 1.0, -1e-15, -1e15), ROW(0, 1e-15, 1.0, 0.25)),
+      CB(0, 1, 1e15, 0, 0, 1e15), CBX_OK, 0 },
+    { "rotation 1e-300 about y",
+      MAT(ROW(1.0, 0, 1e-300, 0), ROW(0, 1, 0, 0), ROW(-1e-300, 0, 1.0, 0)),
+      CB(0, 1e300, 1.5, 0.5, 0, 1e-300), CBX_OK, 0 },
+    /* a huge translation with a tiny box */
+    { "translation 1e15, h = 1e-10",
+      MAT(ROW(1, 0, 0, 1e15), ROW(0, 1, 0, -1e15), ROW(0.5, 0.5, 0, 1e15)),
+      CB(0.3, 1e-10, -0.7, 1e-10, 0, 1e-10), CBX_OK, 0 },
+    /* 1e-200 next to 1e200: 1e200 needs class k >= 704, so |c|, |h| <= 2^314 */
+    { "1e-200 next to 1e200",
+      MAT(ROW(1e200, 1e-200, 1, 0), ROW(-1e-200, 1e200, 0, 1e-200), ROW(1, 1, 1, 0)),
+      CB(1e-200, 1e-200, 3e-201, 2e-200, 1e200, 1e199), CBX_OK, 0 },
+    /* subnormal entries, centres and half-diagonals */
+    { "subnormals everywhere",
+      MAT(ROW(0x1p-1074, -0x1p-1074, 0x1p-1060, 0x1p-1074),
+          ROW(-0x1p-1074, 0x1.8p-1070, 0, -0x1p-1074), ROW(1, -1, 0.5, 0)),
+      CB(0x1p-1074, 0x1p-1074, -0x1p-1073, 0x1p-1074, 0x1p-1022, 0x1p-1030), CBX_OK, 0 },
+    /* unit entries, subnormal cbox: c +- h exact, centre of 0.5 * 2^-1074 */
+    { "subnormal cbox, entry 0.5",
+      MAT(ROW(0.5, 0, 0, 0), ROW(0, 0.5, 0, 0x1p-1074), ROW(0.5, 0.5, 0.5, 0)),
+      CB(0x1p-1074, 0, 0x1p-1074, 0x1p-1074, -0x1p-1074, 0x1p-1074), CBX_OK, 0 },
+    /* class 509 at its corner: m = 2^509, c = h = 2^509 */
+    { "m = 2^509, c = h = 2^509",
+      MAT(ROW(0x1p509, 0, 0, 0), ROW(-0x1p509, 0x1p509, 0, 0),
+          ROW(0x1p509, 0x1p509, 0x1p509, 0x1p1018)),
+      CB(0x1p509, 0x1p509, -0x1p509, 0x1p509, 0, 0x1p509), CBX_OK, 0 },
+    /* class 1018: m = 2^1018 with |c|, h <= 1; t = -2^1018 */
+    { "m = 2^1018, |c|, h <= 1, t = -2^1018",
+      MAT(ROW(0x1p1018, 0, 0, 0), ROW(0, -0x1p1018, 0, 0x1p1018),
+          ROW(0x1p1018, 0, 0, -0x1p1018)),
+      CB(1, 0, -0.5, 0.5, 0, 1), CBX_OK, 0 },
+    /* class 0: m = 1 with c, h = 2^1018; every term 2^1018 */
+    { "m = 1, c = h = 2^1018",
+      MAT(ROW(1, 1, 1, 0x1p1018), ROW(1, -1, 0, 0), ROW(0, 0, -1, -0x1p1018)),
+      CB(0x1p1018, 0x1p1018, -0x1p1018, 0x1p1018, 0, 0x1p1018), CBX_OK, 0 },
+    /* near cancellation: point cbox and t = -fl(m.c) */
+    { "near cancellation t = -fl(m.c), h = 0",
+      MAT(ROW(0.1, 0.2, 0.3, -0.6000000000000001),
+          ROW(1e-3, 1.1, -0.7, -0.024499999999999966), ROW(1, 1, 1, -3)),
+      CB(1, 0, 1, 0, 1, 0), CBX_OK, 0 },
+    /* --- outside the domain ------------------------------------------ */
+    /* m = 2^509 with h one ulp beyond 2^509: neither class 509 nor 512 */
+    { "m = 2^509, h = 2^509 + ulp (row 2 out)",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0x1p509, 0, 0, 0)),
+      CB(0, P509U, 0, 1, 0, 1), CBX_ERANGE, 4 },
+    /* m = 2^509 with c one ulp beyond 2^509 */
+    { "m = 2^509, c = 2^509 + ulp (rows 0, 2 out)",
+      MAT(ROW(0x1p509, 0, 0, 0), ROW(0, 1, 0, 0), ROW(-0x1p509, 0, 0, 0)),
+      CB(P509U, 0, 0, 1, 0, 1), CBX_ERANGE, 5 },
+    /* t one ulp beyond 2^1018 */
+    { "t = 2^1018 + ulp (row 1 out)",
+      MAT(ROW(1, 0, 0, 0x1p1018), ROW(0, 1, 0, -P1018U), ROW(0, 0, 1, 0)),
+      CB(0, 1, 0, 1, 0, 1), CBX_ERANGE, 2 },
+    /* m one ulp beyond 2^1018 even with c = h = 0 */
+    { "m = 2^1018 + ulp, c = h = 0 (row 0 out)",
+      MAT(ROW(P1018U, 0, 0, 0), ROW(0x1p1018, 0, 0, 0), ROW(0, 0, 0, 0)),
+      CB(0, 0, 1, 1, 1, 1), CBX_ERANGE, 1 },
+    /* zero column but h one ulp beyond 2^1018: outside every class */
+    { "zero column, h = 2^1018 + ulp (all out)", ID3,
+      CB(0, 1, 0, 1, 0, P1018U), CBX_ERANGE, 7 },
+    /* h = +inf: not empty, every row out */
+    { "h = +inf (all out)", ID3, CB(0, 1, 0, INF, 0, 1), CBX_ERANGE, 7 },
+    /* c = -inf with a zero column: still out */
+    { "c = -inf (all out)", ID3, CB(-INF, 0, 0, 1, 0, 1), CBX_ERANGE, 7 },
+    /* an infinite translation: only its row */
+    { "t = +inf (row 2 out)",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 1, INF)),
+      CB(0, 1, 0, 1, 0, 1), CBX_ERANGE, 4 },
+    /* --- empty and NaN ----------------------------------------------- */
+    { "h = -2^-1074 (empty)", ID3, CB(0, 1, 0, -0x1p-1074, 0, 1), CBX_EMPTY, 0 },
+    { "h = -inf (empty)", ID3, CB(0, 1, 0, 1, 0, -INF), CBX_EMPTY, 0 },
+    /* empty wins over out-of-domain */
+    { "h < 0 and t = +inf (empty)",
+      MAT(ROW(1, 0, 0, INF), ROW(0, 1, 0, 0), ROW(0, 0, 1, 0)),
+      CB(0, -1, 0, 1, 0, 1), CBX_EMPTY, 0 },
+    { "NaN in h", ID3, CB(0, 1, 0, NAN, 0, 1), CBX_EINVAL, 0 },
+    { "NaN in t", MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, NAN), ROW(0, 0, 1, 0)),
+      CB(0, 1, 0, 1, 0, 1), CBX_EINVAL, 0 },
+    /* NaN wins over empty */
+    { "NaN in c and h < 0", ID3, CB(NAN, 1, 0, -1, 0, 1), CBX_EINVAL, 0 },
+};
+#define N_TC_HARD ((int)(sizeof tc_hard / sizeof tc_hard[0]))
+
+typedef struct b2c_case {
+    const char *name;
+    cbx_box in;
+    cbx_status expect;
+    int oob;
+} b2c_case;
+
+static const b2c_case b2c_hard[] = {
+    /* representable centre and half: exact conversion is possible */
+    { "[0,1], [-1,1], [2,6]", BOX(0, 1, -1, 1, 2, 6), CBX_OK, 0 },
+    /* point boxes and signed zeros ([+0, -0] is not empty) */
+    { "points, [-0,+0], [+0,-0]", BOX(3, 3, -0.0, 0.0, 0.0, -0.0), CBX_OK, 0 },
+    /* one ulp wide: the centre 1 + 2^-53 is not representable */
+    { "one ulp wide at 1 and at -2^100",
+      BOX(1, 0x1.0000000000001p0, -0x1.0000000000001p100, -0x1p100, 0.1, 0.1),
+      CBX_OK, 0 },
+    /* subnormals: centre 1.5 * 2^-1074 not representable */
+    { "subnormal ends", BOX(0x1p-1074, 0x1p-1073, -0x1p-1074, 0x1p-1074, -0x1p-1022,
+                           0x1p-1074), CBX_OK, 0 },
+    /* huge with a tiny width; translated unit box */
+    { "1e15 with width 0.125, tiny at 1e15",
+      BOX(1e15, 1e15 + 0.125, -1e15, -1e15 + 1e-10, 1e15 - 1, 1e15 + 1), CBX_OK, 0 },
+    /* 1e-300 next to 1e300 */
+    { "[-1e300, 1e-300], [1e-300, 1e300]",
+      BOX(-1e300, 1e-300, 1e-300, 1e300, -1e-300, 1e-300), CBX_OK, 0 },
+    /* the domain limit 2^CONV_EMAX exactly, full range */
+    { "[-2^CONV_EMAX, 2^CONV_EMAX] and [2^CONV_EMAX, 2^CONV_EMAX]",
+      BOX(-CLIM, CLIM, CLIM, CLIM, -CLIM, -CLIM), CBX_OK, 0 },
+    { "near the limit, one ulp wide",
+      BOX((CLIM * 0x1.fffffffffffffp-1), CLIM, -CLIM, -(CLIM * 0x1.fffffffffffffp-1), 0, CLIM),
+      CBX_OK, 0 },
+    /* one ulp beyond 2^CONV_EMAX */
+    { "hi = 2^CONV_EMAX + ulp (axis 1 out)", BOX(0, 1, 0, P1019U, 0, 1), CBX_ERANGE, 2 },
+    { "lo = -2^CONV_EMAX - ulp (axis 0 out)", BOX(-P1019U, 0, 0, 1, 0, 1), CBX_ERANGE, 1 },
+    /* 2^1020, DBL_MAX, 1e308 */
+    { "2^(CONV_EMAX+1), DBL_MAX, 1e308 (all out)",
+      BOX((2 * CLIM), (2 * CLIM), -DBL_MAX, DBL_MAX, 1e308, 1e308), CBX_ERANGE, 7 },
+    /* infinite ends: not empty, out */
+    { "[-inf, inf], [+inf, +inf] (axes 0, 2 out)",
+      BOX(-INF, INF, 0, 1, INF, INF), CBX_ERANGE, 5 },
+    /* empty */
+    { "lo one ulp above hi (empty)", BOX(0, 1, 0x1.0000000000001p0, 1, 0, 1), CBX_EMPTY, 0 },
+    { "[+inf, -inf] (empty)", BOX(0, 1, 0, 1, INF, -INF), CBX_EMPTY, 0 },
+    { "empty and out of domain (empty)", BOX(1, 0, -INF, INF, 0, 1), CBX_EMPTY, 0 },
+    /* NaN */
+    { "NaN lo", BOX(NAN, 1, 0, 1, 0, 1), CBX_EINVAL, 0 },
+    { "NaN hi and empty axis", BOX(1, 0, 0, NAN, 0, 1), CBX_EINVAL, 0 },
+};
+#define N_B2C_HARD ((int)(sizeof b2c_hard / sizeof b2c_hard[0]))
+
+typedef struct c2b_case {
+    const char *name;
+    cbx_cbox in;
+    cbx_status expect;
+    int oob;
+} c2b_case;
+
+static const c2b_case c2b_hard[] = {
+    /* exact: (0,1) -> [-1,1], (0.5,0.5) -> [0,1] */
+    { "(0,1), (0.5,0.5), (3,4)", CB(0, 1, 0.5, 0.5, 3, 4), CBX_OK, 0 },
+    /* point cboxes, h = -0.0 is not empty, c = -0.0 */
+    { "h = 0, h = -0.0, c = -0.0", CB(7, 0, -3, -0.0, -0.0, 2), CBX_OK, 0 },
+    /* 1 + 2^-53 is not representable: hi must round up */
+    { "(1, 2^-53): c + h between doubles", CB(1, 0x1p-53, -1, 0x1p-53, 0x1p52, 0.5),
+      CBX_OK, 0 },
+    /* huge centre with tiny half, tiny centre with huge half */
+    { "(1e15, 1e-10), (1e-300, 1e300)", CB(1e15, 1e-10, 1e-300, 1e300, -1e15, 1e-10),
+      CBX_OK, 0 },
+    /* subnormals */
+    { "subnormal c and h", CB(0x1p-1074, 0x1p-1074, -0x1.8p-1073, 0x1p-1074, 0x1p-1022,
+                              0x1p-1060), CBX_OK, 0 },
+    /* the limit 2^CONV_EMAX: c + h = 2^1020 still finite */
+    { "c = h = 2^CONV_EMAX, c = -2^CONV_EMAX", CB(CLIM, CLIM, -CLIM, CLIM,
+                                        -CLIM, 0), CBX_OK, 0 },
+    /* one ulp beyond */
+    { "c = 2^CONV_EMAX + ulp (axis 0 out)", CB(P1019U, 0, 0, 1, 0, 1), CBX_ERANGE, 1 },
+    { "h = 2^CONV_EMAX + ulp (axis 2 out)", CB(0, 1, 0, 1, 0, P1019U), CBX_ERANGE, 4 },
+    { "c = DBL_MAX, h = 1e308 (axes 0, 1 out)", CB(DBL_MAX, 0, 0, 1e308, 0, 1),
+      CBX_ERANGE, 3 },
+    { "h = +inf, c = -inf (axes 1, 2 out)", CB(0, 1, 0, INF, -INF, 0), CBX_ERANGE, 6 },
+    /* empty */
+    { "h = -2^-1074 (empty)", CB(0, 1, 0, -0x1p-1074, 0, 1), CBX_EMPTY, 0 },
+    { "h = -inf and c = inf (empty)", CB(INF, -INF, 0, 1, 0, 1), CBX_EMPTY, 0 },
+    /* NaN */
+    { "NaN c", CB(0, 1, NAN, 1, 0, 1), CBX_EINVAL, 0 },
+    { "NaN h and h < 0 elsewhere", CB(0, -1, 0, 1, 0, NAN), CBX_EINVAL, 0 },
+};
+#define N_C2B_HARD ((int)(sizeof c2b_hard / sizeof c2b_hard[0]))
+
+/* ---------------------------------------------------------------------- */
+/* Random generation                                                      */
+/* ---------------------------------------------------------------------- */
+
+/* half-diagonal in [0, 2^hmax] (with -0.0 and exact zeros) */
+static double gen_half(xu_rng *r, int hmin, int hmax)
+{
+    int p = xu_rng_int(r, 0, 99);
+    if (p < 8) return 0.0;
+    if (p < 12) return -0.0;
+    return xu_gen_mag(r, hmin, hmax);
+}
+
+/* cbox case inside the domain by construction (per column a class k),
+ * "narrow" mode: all products of one size P (cancellation happens). */
+static void gen_tc_in_domain(xu_rng *r, cbx_affine *a, cbx_cbox *b)
+{
+    int narrow = xu_rng_int(r, 0, 1);
+    int P = xu_rng_int(r, -1070, 1016);
+    int i, j;
+    for (j = 0; j < 3; j++) {
+        int k = xu_class_k[xu_rng_int(r, 0, XU_NCLASS - 1)];
+        int mlo = -1074, mhi = k, clo = -1074, chi = 1018 - k;
+        if (narrow) {
+            int lo = P - 1018 + k > -1074 ? P - 1018 + k : -1074;
+            int hi = k < P + 1074 ? k : P + 1074;
+            int am = xu_rng_int(r, lo, hi);
+            mhi = am;
+            mlo = am - 4;
+            chi = P - am;
+            clo = chi - 4;
+        }
+        for (i = 0; i < 3; i++) a->m[i][j] = xu_gen_signed(r, mlo, mhi);
+        b->c[j] = xu_gen_signed(r, clo, chi);
+        switch (xu_rng_int(r, 0, 9)) {
+        case 0: b->h[j] = fabs(b->c[j]); break;               /* c-h = 0 */
+        case 1: b->h[j] = gen_half(r, -1074, chi - 30); break; /* h << c */
+        default: b->h[j] = gen_half(r, clo, chi); break;
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        int p = xu_rng_int(r, 0, 9);
+        if (p < 2) { /* t = -fl(m.c): the centre nearly cancels */
+            double s = 0;
+            for (j = 0; j < 3; j++) s += a->m[i][j] * b->c[j];
+            a->m[i][3] = -s;
+        } else if (p < 3) a->m[i][3] = xu_rng_sign(r) * 0.0;
+        else if (narrow) a->m[i][3] = xu_gen_signed(r, P - 4, P);
+        else a->m[i][3] = xu_gen_signed(r, -1074, 1018);
+    }
+}
+
+static void perturb_tc(xu_rng *r, cbx_affine *a, cbx_cbox *b)
+{
+    int i = xu_rng_int(r, 0, 2), j = xu_rng_int(r, 0, 2), k;
+    switch (xu_rng_int(r, 0, 7)) {
+    case 0: a->m[i][j] = xu_gen_signed(r, 200, 1023); break;
+    case 1: b->c[j] = xu_gen_signed(r, 900, 1023); break;
+    case 2: b->h[j] = xu_gen_mag(r, 900, 1023); break;
+    case 3: /* infinities: c = -+inf, h = +inf, entry or t */
+        switch (xu_rng_int(r, 0, 2)) {
+        case 0: b->c[j] = xu_rng_sign(r) * INF; break;
+        case 1: b->h[j] = INF; break;
+        default: a->m[i][xu_rng_int(r, 0, 3)] = xu_rng_sign(r) * INF; break;
+        }
+        break;
+    case 4: /* translation beyond 2^1018 */
+        k = xu_rng_int(r, 0, 2);
+        a->m[i][3] = xu_rng_sign(r) * (k == 0 ? P1018U : k == 1 ? DBL_MAX
+                                       : xu_gen_mag(r, 1019, 1023));
+        break;
+    case 5: /* one ulp outward on an entry */
+        a->m[i][j] = nextafter(a->m[i][j], a->m[i][j] < 0 ? -INF : INF);
+        break;
+    default: /* exact class corner, then c or h one ulp beyond (or not) */
+        k = xu_class_k[xu_rng_int(r, 0, XU_NCLASS - 1)];
+        a->m[i][j] = xu_rng_sign(r) * ldexp(1.0, k);
+        b->c[j] = xu_rng_sign(r) * ldexp(1.0, 1018 - k);
+        b->h[j] = ldexp(1.0, 1018 - k);
+        if (xu_rng_int(r, 0, 1)) {
+            if (xu_rng_int(r, 0, 1)) b->h[j] = nextafter(b->h[j], INF);
+            else b->c[j] = nextafter(b->c[j], b->c[j] < 0 ? -INF : INF);
+        }
+        break;
+    }
+}
+
+static void inject_nan_tc(xu_rng *r, cbx_affine *a, cbx_cbox *b)
+{
+    int p = xu_rng_int(r, 0, 17);
+    double nan = xu_rng_sign(r) * NAN;
+    if (p < 12) a->m[p / 4][p % 4] = nan;
+    else if (p < 15) b->c[p - 12] = nan;
+    else b->h[p - 15] = nan;
+}
+
+static void inject_neg_h(xu_rng *r, cbx_cbox *b)
+{
+    int j = xu_rng_int(r, 0, 2);
+    switch (xu_rng_int(r, 0, 4)) {
+    case 0: b->h[j] = -0x1p-1074; break;
+    case 1: b->h[j] = -1.0; break;
+    case 2: b->h[j] = -INF; break;
+    case 3: b->h[j] = -DBL_MAX; break;
+    default: b->h[j] = b->h[j] > 0 ? -b->h[j] : -0x1p-1022; break;
+    }
+}
+
+/* ~87% in domain, ~10% pushed out (or to the edge), ~1.5% NaN, ~1.5% empty */
+static void gen_tc_case(xu_rng *r, cbx_affine *a, cbx_cbox *b)
+{
+    int p = xu_rng_int(r, 0, 999);
+    gen_tc_in_domain(r, a, b);
+    if (p < 100) perturb_tc(r, a, b);
+    else if (p < 115) inject_nan_tc(r, a, b);
+    else if (p < 130) {
+        inject_neg_h(r, b);
+        if (p < 118) inject_nan_tc(r, a, b);
+    }
+}
+
+/* an ordered pair of doubles within 2^emax (never empty) */
+static void gen_conv_interval(xu_rng *r, double *lo, double *hi, int emax)
+{
+    int p = xu_rng_int(r, 0, 99);
+    double u, v;
+    if (p < 10) { *lo = *hi = xu_gen_signed(r, -1074, emax); return; }
+    if (p < 15) { *lo = xu_rng_sign(r) * 0.0; *hi = xu_rng_sign(r) * 0.0; return; }
+    if (p < 25) { u = xu_gen_mag(r, -1074, emax); *lo = -u; *hi = u; return; }
+    if (p < 35) { /* k ulps wide */
+        int n = xu_rng_int(r, 1, 3);
+        u = xu_gen_signed(r, -1074, emax);
+        v = u;
+        while (n--) v = nextafter(v, INF);
+        if (fabs(v) > ldexp(1.0, emax)) v = u;
+        *lo = u; *hi = v; return;
+    }
+    if (p < 50) { /* similar magnitudes */
+        int e = xu_rng_int(r, -1070, emax);
+        u = xu_gen_signed(r, e - 3, e);
+        v = xu_gen_signed(r, e - 3, e);
+    } else {
+        u = xu_gen_signed(r, -1074, emax);
+        v = xu_gen_signed(r, -1074, emax);
+    }
+    *lo = u < v ? u : v;
+    *hi = u < v ? v : u;
+}
+
+static double beyond_conv(xu_rng *r)
+{
+    switch (xu_rng_int(r, 0, 4)) {
+    case 0: return nextafter(ldexp(1.0, CONV_EMAX), INF);
+    case 1: return DBL_MAX;
+    case 2: return INF;
+    case 3: return ldexp(1.0, CONV_EMAX); /* the limit itself: in domain */
+    default: return xu_gen_mag(r, CONV_EMAX, 1024);
+    }
+}
+
+static void gen_b2c_case(xu_rng *r, cbx_box *b)
+{
+    int j, p = xu_rng_int(r, 0, 999);
+    for (j = 0; j < 3; j++) gen_conv_interval(r, &b->lo[j], &b->hi[j], CONV_EMAX);
+    j = xu_rng_int(r, 0, 2);
+    if (p < 100) {
+        double big = beyond_conv(r);
+        switch (xu_rng_int(r, 0, 3)) {
+        case 0: b->hi[j] = big; if (b->lo[j] > big) b->lo[j] = -big; break;
+        case 1: b->lo[j] = -big; if (b->hi[j] < -big) b->hi[j] = big; break;
+        case 2: b->lo[j] = -big; b->hi[j] = big; break;
+        default: b->lo[j] = b->hi[j] = xu_rng_sign(r) * big; break;
+        }
+    } else if (p < 115) {
+        double nan = xu_rng_sign(r) * NAN;
+        if (xu_rng_int(r, 0, 1)) b->lo[j] = nan; else b->hi[j] = nan;
+    } else if (p < 130) {
+        switch (xu_rng_int(r, 0, 2)) {
+        case 0: b->lo[j] = nextafter(b->hi[j], INF); break;
+        case 1: b->lo[j] = INF; b->hi[j] = -INF; break;
+        default: b->lo[j] = 1.0; b->hi[j] = -1.0; break;
+        }
+        if (p < 118) b->hi[(j + 1) % 3] = NAN;
+    }
+}
+
+static void gen_c2b_case(xu_rng *r, cbx_cbox *b)
+{
+    int j, p = xu_rng_int(r, 0, 999);
+    for (j = 0; j < 3; j++) {
+        switch (xu_rng_int(r, 0, 5)) {
+        case 0: /* c - h or c + h exactly 0 */
+            b->c[j] = xu_gen_signed(r, -1074, CONV_EMAX);
+            b->h[j] = fabs(b->c[j]);
+            break;
+        case 1: { /* similar magnitudes */
+            int e = xu_rng_int(r, -1070, CONV_EMAX);
+            b->c[j] = xu_gen_signed(r, e - 3, e);
+            b->h[j] = gen_half(r, e - 3, e);
+            break;
+        }
+        default:
+            b->c[j] = xu_gen_signed(r, -1074, CONV_EMAX);
+            b->h[j] = gen_half(r, -1074, CONV_EMAX);
+            break;
+        }
+    }
+    j = xu_rng_int(r, 0, 2);
+    if (p < 100) {
+        double big = beyond_conv(r);
+        if (xu_rng_int(r, 0, 1)) b->c[j] = xu_rng_sign(r) * big;
+        else b->h[j] = big;
+    } else if (p < 115) {
+        double nan = xu_rng_sign(r) * NAN;
+        if (xu_rng_int(r, 0, 1)) b->c[j] = nan; else b->h[j] = nan;
+    } else if (p < 130) {
+        inject_neg_h(r, b);
+        if (p < 118) b->c[(j + 1) % 3] = NAN;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+/* Drivers                                                                */
+/* ---------------------------------------------------------------------- */
+
+static void tc_log(long id, const char *what, const cbx_affine *a,
+                   const cbx_cbox *in, const cbx_cbox *out, const verdict *v)
+{
+    if (!log_head(what, id, v)) return;
+    print_affine(a);
+    print_cbox("in ", in);
+    print_cbox("out", out);
+}
+
+static void run_tc(ctx *k, group *gh, group *gr, long n, uint64_t seed)
+{
+    int h;
+    long c;
+    xu_rng r;
+    fail_logs = 0; /* MAX_FAIL_LOGS per function */
+    printf("-- cbx_transform_cbox: hard cases (%d) --\n", N_TC_HARD);
+    for (h = 0; h < N_TC_HARD; h++) {
+        const tc_case *t = &tc_hard[h];
+        cbx_cbox out;
+        verdict v;
+        double mx;
+        int oob;
+        tc_run(k, gh, &t->a, &t->in, &out, 1, &v, &mx);
+        if (tc_expected(&t->a, &t->in, &oob) != t->expect || oob != t->oob) {
+            if (!v.failed)
+                snprintf(v.why, sizeof v.why, "table says %s/oob %d, oracle oob %d",
+                         cbx_status_name(t->expect), t->oob, oob);
+            v.failed = 1;
+        }
+        g_add(gh, &v);
+        printf("  %-44s %-10s max excess %7.3f  %s\n", t->name,
+               cbx_status_name(v.got), mx, v.failed ? "FAIL" : "ok");
+        if (v.failed) tc_log(h, "transform_cbox hard", &t->a, &t->in, &out, &v);
+    }
+    r.s = seed;
+    for (c = 0; c < n; c++) {
+        cbx_affine a;
+        cbx_cbox in, out;
+        verdict v;
+        double mx;
+        gen_tc_case(&r, &a, &in);
+        if (tc_run(k, gr, &a, &in, &out, c % CORNER_EVERY == 0, &v, &mx))
+            tc_log(c, "transform_cbox random", &a, &in, &out, &v);
+        g_add(gr, &v);
+    }
+}
+
+static void b2c_log(long id, const char *what, const cbx_box *in,
+                    const cbx_cbox *out, const verdict *v)
+{
+    if (!log_head(what, id, v)) return;
+    xu_print_box(stdout, "in ", in);
+    print_cbox("out", out);
+}
+
+static void c2b_log(long id, const char *what, const cbx_cbox *in,
+                    const cbx_box *out, const verdict *v)
+{
+    if (!log_head(what, id, v)) return;
+    print_cbox("in ", in);
+    xu_print_box(stdout, "out", out);
+}
+
+static void run_b2c(ctx *k, group *gh, group *gr, long n, uint64_t seed)
+{
+    int h;
+    long c;
+    xu_rng r;
+    fail_logs = 0; /* MAX_FAIL_LOGS per function */
+    printf("-- cbx_box_to_cbox: hard cases (%d) --\n", N_B2C_HARD);
+    for (h = 0; h < N_B2C_HARD; h++) {
+        const b2c_case *t = &b2c_hard[h];
+        cbx_cbox out;
+        verdict v;
+        double mx;
+        int oob;
+        b2c_run(k, gh, &t->in, &out, &v, &mx);
+        if (v.got == CBX_OK && v.expected == CBX_OK) roundtrip_box(k, gh, &t->in, &out, &v);
+        if (b2c_expected(&t->in, &oob) != t->expect || oob != t->oob) {
+            if (!v.failed)
+                snprintf(v.why, sizeof v.why, "table says %s/oob %d, oracle oob %d",
+                         cbx_status_name(t->expect), t->oob, oob);
+            v.failed = 1;
+        }
+        g_add(gh, &v);
+        printf("  %-44s %-10s max excess %7.3f  %s\n", t->name,
+               cbx_status_name(v.got), mx, v.failed ? "FAIL" : "ok");
+        if (v.failed) b2c_log(h, "box_to_cbox hard", &t->in, &out, &v);
+    }
+    r.s = seed ^ UINT64_C(0xb2cb2cb2c);
+    for (c = 0; c < n; c++) {
+        cbx_box in;
+        cbx_cbox out;
+        verdict v;
+        double mx;
+        gen_b2c_case(&r, &in);
+        b2c_run(k, gr, &in, &out, &v, &mx);
+        if (v.got == CBX_OK && v.expected == CBX_OK) roundtrip_box(k, gr, &in, &out, &v);
+        if (v.failed) b2c_log(c, "box_to_cbox random", &in, &out, &v);
+        g_add(gr, &v);
+    }
+}
+
+static void run_c2b(ctx *k, group *gh, group *gr, long n, uint64_t seed)
+{
+    int h;
+    long c;
+    xu_rng r;
+    fail_logs = 0; /* MAX_FAIL_LOGS per function */
+    printf("-- cbx_cbox_to_box: hard cases (%d) --\n", N_C2B_HARD);
+    for (h = 0; h < N_C2B_HARD; h++) {
+        const c2b_case *t = &c2b_hard[h];
+        cbx_box out;
+        verdict v;
+        double mx;
+        int oob;
+        c2b_run(k, gh, &t->in, &out, &v, &mx);
+        if (v.got == CBX_OK && v.expected == CBX_OK) roundtrip_cbox(k, gh, &t->in, &out, &v);
+        if (c2b_expected(&t->in, &oob) != t->expect || oob != t->oob) {
+            if (!v.failed)
+                snprintf(v.why, sizeof v.why, "table says %s/oob %d, oracle oob %d",
+                         cbx_status_name(t->expect), t->oob, oob);
+            v.failed = 1;
+        }
+        g_add(gh, &v);
+        printf("  %-44s %-10s max excess %7.3f  %s\n", t->name,
+               cbx_status_name(v.got), mx, v.failed ? "FAIL" : "ok");
+        if (v.failed) c2b_log(h, "cbox_to_box hard", &t->in, &out, &v);
+    }
+    r.s = seed ^ UINT64_C(0xc2bc2bc2b);
+    for (c = 0; c < n; c++) {
+        cbx_cbox in;
+        cbx_box out;
+        verdict v;
+        double mx;
+        gen_c2b_case(&r, &in);
+        c2b_run(k, gr, &in, &out, &v, &mx);
+        if (v.got == CBX_OK && v.expected == CBX_OK) roundtrip_cbox(k, gr, &in, &out, &v);
+        if (v.failed) c2b_log(c, "cbox_to_box random", &in, &out, &v);
+        g_add(gr, &v);
+    }
+}
+
+static unsigned long long arg_num(int argc, char **argv, int k,
+                                  unsigned long long dflt)
+{
+    char *end;
+    unsigned long long v;
+    if (argc <= k) return dflt;
+    v = strtoull(argv[k], &end, 0);
+    if (*argv[k] == '\0' || *argv[k] == '-' || *end != '\0') {
+        fprintf(stderr, "usage: %s [N] [seed]\n", argv[0]);
+        exit(2);
+    }
+    return v;
+}
+
+int main(int argc, char **argv)
+{
+    long n = (long)arg_num(argc, argv, 1, 300000ULL);
+    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 0xcb0c5eed2024ULL);
+    ctx k;
+    group g[6];
+    long passed = 0, failed = 0;
+    int i;
+    clock_t t0 = clock();
+
+    ctx_init(&k);
+    g_init(&g[0], "cbx_transform_cbox, hard cases", "u*S + eta, S = |t| + sum |m_j|(|c_j| + h_j)");
+    g_init(&g[1], "cbx_transform_cbox, random cases", "u*S + eta, S = |t| + sum |m_j|(|c_j| + h_j)");
+    g_init(&g[2], "cbx_box_to_cbox, hard cases", "u*max(|lo|,|hi|) + eta (sanity on the mean of both ends)");
+    g_init(&g[3], "cbx_box_to_cbox, random cases", "u*max(|lo|,|hi|) + eta (sanity on the mean of both ends)");
+    g_init(&g[4], "cbx_cbox_to_box, hard cases", "u*(|c| + h) + eta");
+    g_init(&g[5], "cbx_cbox_to_box, random cases", "u*(|c| + h) + eta");
+
+    printf("test_cbox: N = %ld random cases per function, seed 0x%llx, conversion "
+           "domain 2^%d, sanity bound %g units, corners every %d-th random case\n\n",
+           n, (unsigned long long)seed, CONV_EMAX, SANITY, CORNER_EVERY);
+    run_tc(&k, &g[0], &g[1], n, seed);
+    run_b2c(&k, &g[2], &g[3], n, seed);
+    run_c2b(&k, &g[4], &g[5], n, seed);
+
+    printf("\n");
+    for (i = 0; i < 6; i++) {
+        g_print(&g[i]);
+        passed += g[i].cases - g[i].failed;
+        failed += g[i].failed;
+    }
+    printf("spec-tight = cbox_tight of specs/cbx_spec.h: each end within "
+           "12 u S + 2^-1065 of the exact end\n");
+    printf("CPU time %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
+    ctx_clear(&k);
+    printf("%ld passed, %ld failed\n", passed, failed);
+    return failed ? 1 : 0;
+}
