@@ -3,5 +3,4 @@
 #include "cbx_interval.c"
 #include "cbx_center.c"
 #include "cbx_convert.c"
-#include "cbx_sphere.c"
 #include "cbx_status.c"

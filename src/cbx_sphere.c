@@ -18,6 +18,9 @@
 #include "cbx_round.h"
 #include "cbx_domain.h"
 #include "cbx_endpoints.h"
+#ifdef __FRAMAC__
+#include "cbx_ball.h"
+#endif
 
 /* An upper bound r of the norm of (b0, b1, b2): b . b <= r^2. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
@@ -67,6 +70,8 @@ static double ball_radius(double b0, double b1, double b2)
 static conv_res ball_axis_bounds(double b0, double b1, double b2, double t)
 {
     double r = ball_radius(b0, b1, b2);
+    /*@ assert bb: \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
+          -r <= dot3(b0, b1, b2, p0, p1, p2) <= r; */
     conv_res lh = cbx_c2b(t, r);
     /*@ assert lh: lh.a <= t - r && t + r <= lh.b; */
     return lh;
@@ -128,6 +133,23 @@ static int aff_any_nan(const cbx_affine *a)
            || cbx_is_nan(a->m[2][3]);
 }
 
+/*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
+    assigns *out;
+    behavior nan_input:
+      assumes aff_nan(a);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior map_input:
+      assumes !aff_nan(a);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: sph_axis(a, out, 0);
+      ensures axis1: sph_axis(a, out, 1);
+      ensures axis2: sph_axis(a, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (sph_row_dom(a, 0) && sph_row_dom(a, 1) && sph_row_dom(a, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
+
 cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
 {
     if (aff_any_nan(a)) {
@@ -174,6 +196,8 @@ static conv_res ell_axis_bounds(double r0, double r1, double r2,
     double r = ball_radius(b0, b1, b2);
     /*@ assert sq0: sq_le(r0*d0, b0) && sq_le(r1*d1, b1) && sq_le(r2*d2, b2); */
     /*@ assert sb: sq_bound(r0*d0, r1*d1, r2*d2, r); */
+    /*@ assert bb: \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
+          -r <= dot3(r0*d0, r1*d1, r2*d2, p0, p1, p2) <= r; */
     conv_res lh = cbx_c2b(c, r);
     /*@ assert lh: lh.a <= c - r && c + r <= lh.b; */
     return lh;
@@ -236,6 +260,26 @@ static ell_res ellipsoid_axis(double r0, double r1, double r2,
     }
     return e;
 }
+
+/*@ requires valid: \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, center + (0 .. 2), radii + (0 .. 2), rot + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes ell_nan(center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior ellipsoid_input:
+      assumes !ell_nan(center, radii, rot);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: ell_axis(center, radii, rot, out, 0);
+      ensures axis1: ell_axis(center, radii, rot, out, 1);
+      ensures axis2: ell_axis(center, radii, rot, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (ell_row_dom(center, radii, rot, 0) && ell_row_dom(center, radii, rot, 1)
+         && ell_row_dom(center, radii, rot, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
 
 cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
                              const double rot[3][3], cbx_box *out)

@@ -1,0 +1,3 @@
+/* The ACSL lemmas of specs/cbx_spec.h, proven on their own (pass L of
+ * proofs/run.sh): this file has no function, so WP's goals are the lemmas. */
+#include "certbox.h"
