@@ -24,7 +24,7 @@ SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-
 
 B := build
 LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c
-HEADERS := src/certbox.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h specs/cbx_spec.h
+HEADERS := src/certbox.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h specs/cbx_spec.h specs/cbx_ball.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)

@@ -4,3 +4,4 @@
 #include "cbx_center.c"
 #include "cbx_convert.c"
 #include "cbx_status.c"
+#include "cbx_sphere.c"

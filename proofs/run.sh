@@ -20,7 +20,7 @@ WP="-wp -wp-smoke-tests -wp-smoke-timeout ${CBX_SMOKE_TIMEOUT:-1} -wp-rte -wp-pr
 # are two-sided bounds; one goal per side proves fastest).
 # Pass B: everything else (lemmas, domain checks, public functions) without
 # -wp-split (splitting the behaviors' postconditions multiplies goals).
-KERNELS=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,term_lo,term_hi,term_mag,axis_lo,axis_hi,cbox_axis,b2c,cbx_c2b
+KERNELS=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,term_lo,term_hi,term_mag,axis_lo,axis_hi,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,row_radius,ball_axis_bounds,ell_axis_bounds
 # Pass L: the lemmas of specs/cbx_spec.h (proofs/lemmas.c has no function).
 echo "proof: pass L, lemmas"
 start=$(date +%s)

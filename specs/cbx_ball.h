@@ -1,8 +1,13 @@
 /*
  * ACSL logic of the sphere and ellipsoid bounds (src/cbx_sphere.c): unit
- * ball, Cauchy-Schwarz chain, domains.  Not yet part of `make proof`: the
- * kernel proofs went through, but the lemma ball_row and the kernels that
- * use it do not yet prove together (see proofs/README.md, "Open").
+ * ball, Cauchy-Schwarz chain, domains.
+ *
+ * How the proof is split: the code only ever establishes the quantifier-free
+ * predicate ball_cover (both ends at least the row norm away from t, in
+ * squares); the lemma cover_ball, proven once over the reals in pass L
+ * (proofs/lemmas.c) from Cauchy-Schwarz, turns it into the statement about
+ * every point of the ball (ball_axis) that the public contracts carry.
+ * No float goal ever sees the quantifier over p.
  */
 #ifndef CBX_BALL_H
 #define CBX_BALL_H
@@ -20,7 +25,7 @@
 
     // Squaring is monotone on nonnegative reals (both directions).
     lemma sq_mono: \forall real a, b; 0 <= a <= b ==> sq_le(a, b);
-    lemma sq_mono_inv: \forall real a, b; 0 <= a ==> 0 <= b ==> sq_le(a, b) ==> a <= b;
+    lemma sq_mono_inv: \forall real a, b; 0 <= b ==> sq_le(a, b) ==> -b <= a <= b;
 
     // Cauchy-Schwarz in 3 dimensions, via Lagrange's identity; each step is
     // a separate lemma whose terms (dot3, nrm3) trigger the previous one.
@@ -33,19 +38,48 @@
       dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2)
         <= nrm3(m0, m1, m2) * nrm3(p0, p1, p2);
     lemma cs_ball: \forall real m0, m1, m2, p0, p1, p2;
-      nrm3(p0, p1, p2) <= 1 ==>
+      in_ball(p0, p1, p2) ==>
       dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2) <= nrm3(m0, m1, m2);
-    lemma abs_le_sq: \forall real x, r; 0 <= r ==> sq_le(x, r) ==> -r <= x <= r;
-    lemma cs_ball_sq: \forall real m0, m1, m2, p0, p1, p2, r;
-      in_ball(p0, p1, p2) ==> sq_bound(m0, m1, m2, r) ==>
-      sq_le(dot3(m0, m1, m2, p0, p1, p2), r);
-    lemma ball_row: \forall real m0, m1, m2, p0, p1, p2, r;
-      in_ball(p0, p1, p2) ==> sq_bound(m0, m1, m2, r) ==>
-      sq_le(dot3(m0, m1, m2, p0, p1, p2), r) && -r <= dot3(m0, m1, m2, p0, p1, p2) <= r;
 
-    // Stated after ball_row on purpose: a lemma is a hypothesis of every
-    // later lemma, and this one derails the provers on ball_row.
+    // [lo, hi] holds t + b.p for every p of the unit ball.
+    predicate ball_axis(real lo, real hi, real b0, real b1, real b2, real t) =
+      \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
+        lo <= dot3(b0, b1, b2, p0, p1, p2) + t <= hi;
+
+    // The same statement without a quantifier (equivalent to it): both
+    // distances from t to the ends are at least the row norm.  The code
+    // establishes this form; lemma cover_ball turns it into ball_axis.
+    predicate ball_cover(real lo, real hi, real b0, real b1, real b2, real t) =
+      lo <= t && t <= hi
+      && nrm3(b0, b1, b2) <= (t - lo)*(t - lo)
+      && nrm3(b0, b1, b2) <= (hi - t)*(hi - t);
+
+    lemma cover_dot: \forall real lo, hi, b0, b1, b2, t, p0, p1, p2;
+      ball_cover(lo, hi, b0, b1, b2, t) ==> in_ball(p0, p1, p2) ==>
+      sq_le(dot3(b0, b1, b2, p0, p1, p2), t - lo)
+      && sq_le(dot3(b0, b1, b2, p0, p1, p2), hi - t);
+    lemma cover_ball: \forall real lo, hi, b0, b1, b2, t;
+      ball_cover(lo, hi, b0, b1, b2, t) ==> ball_axis(lo, hi, b0, b1, b2, t);
+
+    // How the code gets ball_cover: a radius r with |b| <= r and [lo, hi]
+    // containing [t - r, t + r].
+    lemma cover_sq: \forall real lo, hi, b0, b1, b2, t, r;
+      sq_bound(b0, b1, b2, r) ==> lo <= t ==> t <= hi ==>
+      sq_le(r, t - lo) ==> sq_le(r, hi - t) ==> ball_cover(lo, hi, b0, b1, b2, t);
+    lemma cover_intro: \forall real lo, hi, b0, b1, b2, t, r;
+      sq_bound(b0, b1, b2, r) ==> lo <= t - r ==> t + r <= hi ==>
+      ball_cover(lo, hi, b0, b1, b2, t);
+    // A row dominated entrywise in absolute value has the smaller norm.
     lemma sq_abs: \forall real a, b; \abs(a) <= b ==> sq_le(a, b);
+    lemma sq_bound_dom: \forall real a0, a1, a2, b0, b1, b2, r;
+      sq_le(a0, b0) ==> sq_le(a1, b1) ==> sq_le(a2, b2) ==>
+      sq_bound(b0, b1, b2, r) ==> sq_bound(a0, a1, a2, r);
+    // Scaling a row by 2^600 scales its norm by 2^600 (row_radius); a
+    // larger radius still bounds.
+    lemma sq_bound_scale: \forall real b0, b1, b2, r;
+      sq_bound(b0*0x1p600, b1*0x1p600, b2*0x1p600, r) ==> sq_bound(b0, b1, b2, r*0x1p-600);
+    lemma sq_bound_up: \forall real b0, b1, b2, r, q;
+      sq_bound(b0, b1, b2, r) ==> r <= q ==> sq_bound(b0, b1, b2, q);
 */
 
 /*@ predicate in_dom508(real x, real y) = -0x1p508 <= x*y <= 0x1p508;
@@ -55,11 +89,6 @@
          \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
       || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
       || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
-
-    // [lo, hi] holds coordinate t + b.p of every point p of the unit ball.
-    predicate ball_axis(real lo, real hi, real b0, real b1, real b2, real t) =
-      \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
-        lo <= dot3(b0, b1, b2, p0, p1, p2) + t <= hi;
 
     predicate sph_dom(real m0, real m1, real m2, real t) =
       cls(m0, m0, 0x1p509, 0x1p509) && cls(m1, m1, 0x1p509, 0x1p509)

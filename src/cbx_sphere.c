@@ -18,9 +18,6 @@
 #include "cbx_round.h"
 #include "cbx_domain.h"
 #include "cbx_endpoints.h"
-#ifdef __FRAMAC__
-#include "cbx_ball.h"
-#endif
 
 /* An upper bound r of the norm of (b0, b1, b2): b . b <= r^2. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
@@ -58,6 +55,47 @@ static double ball_radius(double b0, double b1, double b2)
     return ru;
 }
 
+/* An upper bound of |r * d| (exact product): the ellipsoid's rows, and the
+ * scalings of row_radius. */
+/*@ requires fin: \is_finite(r) && \is_finite(d);
+    requires rng: in_dom508(r, d);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures up: \abs(r*d) <= \result <= 0x1p509;
+*/
+static double abs_prod_up(double r, double d)
+{
+    double e = cbx_abs(cbx_mul_rn(r, d));
+    double f = cbx_add_rn(e, cbx_mul_rn(e, 0x1p-51));
+    return cbx_add_rn(f, 0x1p-1070);
+}
+
+/* An upper bound r of the norm of (b0, b1, b2), accurate for every row: a
+ * row with all |b_j| < 2^-300 (whose squares may underflow) is first scaled
+ * by 2^600, and its radius scaled back by 2^-600, both rounded up. */
+/*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
+    requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
+                  && cls(b2, b2, 0x1p509, 0x1p509);
+    assigns \nothing;
+    ensures fin: \is_finite(\result) && 0 <= \result <= 0x1p512;
+    ensures bound: sq_bound(b0, b1, b2, \result);
+*/
+static double row_radius(double b0, double b1, double b2)
+{
+    if (!cbx_cls(b0, b1, 0x1p-300, 0x1p-300) || !cbx_cls(b2, b2, 0x1p-300, 0x1p-300))
+        return ball_radius(b0, b1, b2);
+    double s0 = abs_prod_up(b0, 0x1p600);
+    double s1 = abs_prod_up(b1, 0x1p600);
+    double s2 = abs_prod_up(b2, 0x1p600);
+    double rs = ball_radius(s0, s1, s2);
+    /*@ assert sq0: sq_le(b0*0x1p600, s0) && sq_le(b1*0x1p600, s1) && sq_le(b2*0x1p600, s2); */
+    /*@ assert sbs: sq_bound(b0*0x1p600, b1*0x1p600, b2*0x1p600, rs); */
+    /*@ assert sb: sq_bound(b0, b1, b2, rs*0x1p-600); */
+    double r = abs_prod_up(rs, 0x1p-600);
+    /*@ assert rr: rs*0x1p-600 <= r; */
+    return r;
+}
+
 /* Bounds [lo, hi] of t + b . p over the unit ball. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(t);
     requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
@@ -65,13 +103,11 @@ static double ball_radius(double b0, double b1, double b2)
     requires rt: -0x1p1018 <= t <= 0x1p1018;
     assigns \nothing;
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
-    ensures ball: ball_axis(\result.a, \result.b, b0, b1, b2, t);
+    ensures ball: ball_cover(\result.a, \result.b, b0, b1, b2, t);
 */
 static conv_res ball_axis_bounds(double b0, double b1, double b2, double t)
 {
-    double r = ball_radius(b0, b1, b2);
-    /*@ assert bb: \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
-          -r <= dot3(b0, b1, b2, p0, p1, p2) <= r; */
+    double r = row_radius(b0, b1, b2);
     conv_res lh = cbx_c2b(t, r);
     /*@ assert lh: lh.a <= t - r && t + r <= lh.b; */
     return lh;
@@ -133,23 +169,7 @@ static int aff_any_nan(const cbx_affine *a)
            || cbx_is_nan(a->m[2][3]);
 }
 
-/*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
-    assigns *out;
-    behavior nan_input:
-      assumes aff_nan(a);
-      ensures \result == CBX_EINVAL && whole_space(out);
-    behavior map_input:
-      assumes !aff_nan(a);
-      ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: sph_axis(a, out, 0);
-      ensures axis1: sph_axis(a, out, 1);
-      ensures axis2: sph_axis(a, out, 2);
-      ensures ok_iff: \result == CBX_OK <==>
-        (sph_row_dom(a, 0) && sph_row_dom(a, 1) && sph_row_dom(a, 2));
-    complete behaviors;
-    disjoint behaviors;
-*/
-
+/* contract: src/certbox.h */
 cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
 {
     if (aff_any_nan(a)) {
@@ -164,28 +184,13 @@ cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
 }
 
-/* An upper bound of |r * d| (exact product), for the ellipsoid's rows. */
-/*@ requires fin: \is_finite(r) && \is_finite(d);
-    requires rng: cls(r, d, 0x1p254, 0x1p254);
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures up: \abs(r*d) <= \result <= 0x1p509;
-*/
-static double abs_prod_up(double r, double d)
-{
-    /*@ assert d508: in_dom508(r, d); */
-    double e = cbx_abs(cbx_mul_rn(r, d));
-    double f = cbx_add_rn(e, cbx_mul_rn(e, 0x1p-51));
-    return cbx_add_rn(f, 0x1p-1070);
-}
-
 /* Bounds of center + (r0 d0, r1 d1, r2 d2) . p over the unit ball. */
 /*@ requires fin: \is_finite(r0) && \is_finite(r1) && \is_finite(r2)
                   && \is_finite(d0) && \is_finite(d1) && \is_finite(d2) && \is_finite(c);
     requires dom: ell_dom(r0, r1, r2, d0, d1, d2, c);
     assigns \nothing;
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
-    ensures ball: ball_axis(\result.a, \result.b, r0*d0, r1*d1, r2*d2, c);
+    ensures ball: ball_cover(\result.a, \result.b, r0*d0, r1*d1, r2*d2, c);
 */
 static conv_res ell_axis_bounds(double r0, double r1, double r2,
                                 double d0, double d1, double d2, double c)
@@ -193,11 +198,9 @@ static conv_res ell_axis_bounds(double r0, double r1, double r2,
     double b0 = abs_prod_up(r0, d0);
     double b1 = abs_prod_up(r1, d1);
     double b2 = abs_prod_up(r2, d2);
-    double r = ball_radius(b0, b1, b2);
+    double r = row_radius(b0, b1, b2);
     /*@ assert sq0: sq_le(r0*d0, b0) && sq_le(r1*d1, b1) && sq_le(r2*d2, b2); */
     /*@ assert sb: sq_bound(r0*d0, r1*d1, r2*d2, r); */
-    /*@ assert bb: \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
-          -r <= dot3(r0*d0, r1*d1, r2*d2, p0, p1, p2) <= r; */
     conv_res lh = cbx_c2b(c, r);
     /*@ assert lh: lh.a <= c - r && c + r <= lh.b; */
     return lh;
@@ -261,26 +264,7 @@ static ell_res ellipsoid_axis(double r0, double r1, double r2,
     return e;
 }
 
-/*@ requires valid: \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
-                    && \valid_read(rot + (0 .. 2)) && \valid(out);
-    requires sep: \separated(out, center + (0 .. 2), radii + (0 .. 2), rot + (0 .. 2));
-    assigns *out;
-    behavior nan_input:
-      assumes ell_nan(center, radii, rot);
-      ensures \result == CBX_EINVAL && whole_space(out);
-    behavior ellipsoid_input:
-      assumes !ell_nan(center, radii, rot);
-      ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: ell_axis(center, radii, rot, out, 0);
-      ensures axis1: ell_axis(center, radii, rot, out, 1);
-      ensures axis2: ell_axis(center, radii, rot, out, 2);
-      ensures ok_iff: \result == CBX_OK <==>
-        (ell_row_dom(center, radii, rot, 0) && ell_row_dom(center, radii, rot, 1)
-         && ell_row_dom(center, radii, rot, 2));
-    complete behaviors;
-    disjoint behaviors;
-*/
-
+/* contract: src/certbox.h */
 cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
                              const double rot[3][3], cbx_box *out)
 {

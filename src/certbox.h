@@ -63,6 +63,7 @@ typedef enum cbx_status {
 
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
+#include "cbx_ball.h"
 #endif
 
 /* Transform an axis-aligned box by an affine map (Arvo's interval form,
@@ -185,10 +186,46 @@ cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out);
  * (rot need not be orthogonal; radii may be negative or zero).  Domain:
  * |rot[i][j]| <= 2^254, |radii[j]| <= 2^254, |center[i]| <= 2^1018.
  * NaN -> CBX_EINVAL and the whole space; outside the domain -> CBX_ERANGE
- * and those axes [-inf, +inf].  Their ACSL contracts are in src/cbx_sphere.c;
- * they are tested exactly (GMP/MPFR) but not yet proven (proofs/README.md). */
+ * and those axes [-inf, +inf].  Proven: on every axis in the domain, for
+ * every real point p with p.p <= 1, lo_i <= (M p + T)_i <= hi_i (exact reals;
+ * for the ellipsoid M_ij = rot[i][j] * radii[j] exactly): specs/cbx_ball.h. */
+/*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
+    assigns *out;
+    behavior nan_input:
+      assumes aff_nan(a);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior map_input:
+      assumes !aff_nan(a);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: sph_axis(a, out, 0);
+      ensures axis1: sph_axis(a, out, 1);
+      ensures axis2: sph_axis(a, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (sph_row_dom(a, 0) && sph_row_dom(a, 1) && sph_row_dom(a, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
 cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out);
 
+/*@ requires valid: \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, center + (0 .. 2), radii + (0 .. 2), rot + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes ell_nan(center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior ellipsoid_input:
+      assumes !ell_nan(center, radii, rot);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: ell_axis(center, radii, rot, out, 0);
+      ensures axis1: ell_axis(center, radii, rot, out, 1);
+      ensures axis2: ell_axis(center, radii, rot, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (ell_row_dom(center, radii, rot, 0) && ell_row_dom(center, radii, rot, 1)
+         && ell_row_dom(center, radii, rot, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
 cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
                              const double rot[3][3], cbx_box *out);
 

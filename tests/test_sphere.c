@@ -20,8 +20,8 @@
  *   - tightness against MPFR (256 bits, raised automatically where t and
  *     sqrt(s) cancel): in ulps of the exact end, and in units of
  *     u*(|t| + sqrt(s)) + eta (u = 2^-53, eta = 2^-1074); the sanity bound
- *     (documented floor: an end may be up to 2^-534 out, the radius floor
- *     of src/cbx_sphere.c; a gap must exceed both 64 units and 2^-534 to fail)
+ *     (documented floor: an end may be up to 2^-1064 out, the absolute terms
+ *     of src/cbx_sphere.c; a gap must exceed both 64 units and 2^-1064 to fail)
  *     (check "sanity<=64") fails an end more than 64 units out on axes with
  *     u*(|t| + sqrt(s)) >= 2^-1000; on the other axes (check "tiny-abs")
  *     an end fails when its gap is above both 64 units and 2^-1000;
@@ -164,8 +164,8 @@ static void g_print(const group *g)
     ex_print("units of u*(|t|+sqrt s)+eta:", &g->units);
     ex_print("  same, axes with |t|+sqrt s >= 2^-480:", &g->units_big);
     ex_print("  same, axes with u*(|t|+sqrt s) < 2^-1000:", &g->units_tiny);
-    ex_print("ulps of the exact end, no cancellation,", &g->ulps_nocancel);
-    printf("  %-44s\n", "  |t|+sqrt s >= 2^-480:");
+    ex_print("ulps of the exact end, no cancellation", &g->ulps_nocancel);
+    printf("    (ulps counted on axes with |t|+sqrt s >= 2^-480)\n");
     if (g->axes)
         printf("  ulps of the exact end, all ends: max %.4g, %ld ends above 64 ulps "
                "(where t and sqrt(s) cancel the end is tiny and its ulp too)\n",
@@ -326,7 +326,7 @@ static void mp_row(ctx *k, const mpz_t s, unsigned long sh, double t,
     /* lower end: exact_lo - lo */
     mpfr_sub_d(k->G, k->EL, lo, MPFR_RNDN);
     r->exact_lo = mpfr_zero_p(k->G);
-    r->bad_lo = mpfr_cmp_ui_2exp(k->G, 1, -534) > 0;
+    r->bad_lo = mpfr_cmp_ui_2exp(k->G, 1, -1064) > 0;
     mpfr_mul_2si(k->G, k->G, -ulp_exp(k->EL), MPFR_RNDN);
     r->ulps_lo = mpfr_get_d(k->G, MPFR_RNDN);
     mpfr_sub_d(k->G, k->EL, lo, MPFR_RNDN);
@@ -337,7 +337,7 @@ static void mp_row(ctx *k, const mpz_t s, unsigned long sh, double t,
     mpfr_set_d(k->T, hi, MPFR_RNDN);
     mpfr_sub(k->G, k->T, k->EH, MPFR_RNDN);
     r->exact_hi = mpfr_zero_p(k->G);
-    r->bad_hi = mpfr_cmp_ui_2exp(k->G, 1, -534) > 0;
+    r->bad_hi = mpfr_cmp_ui_2exp(k->G, 1, -1064) > 0;
     mpfr_mul_2si(k->G, k->G, -ulp_exp(k->EH), MPFR_RNDN);
     r->ulps_hi = mpfr_get_d(k->G, MPFR_RNDN);
     mpfr_sub(k->G, k->T, k->EH, MPFR_RNDN);
