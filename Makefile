@@ -4,6 +4,8 @@
 #   make check    run every test, proofs included (installs missing packages)
 #   make proof    re-run the Frama-C/WP proofs and rewrite proofs/report.md
 #   make install  PREFIX=/usr/local DESTDIR=
+#   make mutants  mutation check: deliberate faults must all be caught
+#   make fuzz     libFuzzer harnesses with the exact oracle (60 s each)
 
 VERSION   := 0.1.0
 SOVERSION := 0
@@ -29,7 +31,7 @@ LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)
 
-.PHONY: install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
+.PHONY: mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
 all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/demo $(B)/certbox.pc
 
 $(B)/obj/%.o: src/%.c $(HEADERS)
@@ -66,12 +68,15 @@ demo: check-deps-test
 	$(MAKE) $(B)/demo
 	./$(B)/demo
 
-TESTS := exact badinput cbox sphere
+TESTS := exact badinput cbox sphere special chain alias
 test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_badinput
+	./$(B)/test_special
 	./$(B)/test_exact 1000000 1
 	./$(B)/test_cbox 300000 1
 	./$(B)/test_sphere 200000 1
+	./$(B)/test_alias 100000 1
+	./$(B)/test_chain 1000 20 1
 
 # Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
 test-san: $(TESTS:%=$(B)/san/test_%)
@@ -79,6 +84,9 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_exact 200000 2
 	./$(B)/san/test_cbox 100000 2
 	./$(B)/san/test_sphere 30000 2
+	./$(B)/san/test_special
+	./$(B)/san/test_alias 20000 2
+	./$(B)/san/test_chain 1000 10 2
 
 # The public header compiles as C99, C11 and C++.
 header-check:
@@ -129,13 +137,18 @@ install: all
 	install -m 755 $(B)/libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcertbox.so
-	install -m 644 src/certbox.h specs/cbx_spec.h $(DESTDIR)$(INCDIR)/
+	install -m 644 src/certbox.h specs/cbx_spec.h specs/cbx_ball.h $(DESTDIR)$(INCDIR)/
 	sed -e 's#@PREFIX@#$(PREFIX)#' -e 's#@LIBDIR@#$(LIBDIR)#' -e 's#@INCDIR@#$(INCDIR)#' \
 	    -e 's#@VERSION@#$(VERSION)#' certbox.pc.in > $(DESTDIR)$(PCDIR)/certbox.pc
 
 uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
-	      $(DESTDIR)$(INCDIR)/certbox.h $(DESTDIR)$(INCDIR)/cbx_spec.h $(DESTDIR)$(PCDIR)/certbox.pc
+	      $(DESTDIR)$(INCDIR)/certbox.h $(DESTDIR)$(INCDIR)/cbx_spec.h \
+	      $(DESTDIR)$(INCDIR)/cbx_ball.h $(DESTDIR)$(PCDIR)/certbox.pc
+
+# Mutation check: deliberate faults in a scratch copy must all be caught.
+mutants: check-deps-test
+	bash scripts/mutants.sh
 
 clean:
 	rm -rf $(B)

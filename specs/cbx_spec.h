@@ -171,10 +171,13 @@
         && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
          (\is_minus_infinity(lo) && \is_plus_infinity(hi)));
 
-    // The same on the public structures.
-    predicate axis_sound(cbx_affine *a, cbx_box *b, cbx_box *o, integer i) =
-      axis_sound_s(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
-                   b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
+    // The same on the public structures: the inputs read at label I, the
+    // output at label O (the output may be the input box itself).
+    predicate axis_sound{I,O}(cbx_affine *a, cbx_box *b, cbx_box *o, integer i) =
+      axis_sound_s(\at(o->lo[i], O), \at(o->hi[i], O),
+                   \at(a->m[i][0], I), \at(a->m[i][1], I), \at(a->m[i][2], I), \at(a->m[i][3], I),
+                   \at(b->lo[0], I), \at(b->hi[0], I), \at(b->lo[1], I), \at(b->hi[1], I),
+                   \at(b->lo[2], I), \at(b->hi[2], I));
 */
 
 /*@ // ---------------------------------------------------------------------
@@ -257,9 +260,30 @@
       && cbox_tight(o->c[i], o->h[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
                     b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2]);
 
-    predicate caxis_sound(cbx_affine *a, cbx_cbox *b, cbx_cbox *o, integer i) =
-      (crow_dom(a, b, i) ==> caxis_proven(a, b, o, i))
-      && (!crow_dom(a, b, i) ==> cwhole_axis(o, i));
+    // One axis on the values: the kernel's statement inside the domain,
+    // (0, +inf) outside it.
+    predicate caxis_sound_s(double oc, double oh, double m0, double m1, double m2, double t,
+                            double c0, double c1, double c2, double h0, double h1, double h2) =
+      ((\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+        && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
+        && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
+        && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)) ==>
+         (\is_finite(oc) && \is_finite(oh)
+          && cbox_corners(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
+          && cbox_tight(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2)))
+      && (!(\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+        && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
+        && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
+        && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)) ==>
+         (oc == 0 && \is_plus_infinity(oh)));
+
+    // The same on the public structures: inputs at label I, output at O
+    // (the output may be the input cbox itself).
+    predicate caxis_sound{I,O}(cbx_affine *a, cbx_cbox *b, cbx_cbox *o, integer i) =
+      caxis_sound_s(\at(o->c[i], O), \at(o->h[i], O),
+                    \at(a->m[i][0], I), \at(a->m[i][1], I), \at(a->m[i][2], I), \at(a->m[i][3], I),
+                    \at(b->c[0], I), \at(b->c[1], I), \at(b->c[2], I),
+                    \at(b->h[0], I), \at(b->h[1], I), \at(b->h[2], I));
 
     // Conversions: one axis in their domain (finite, magnitude <= 2^1019).
     predicate conv_dom(real x, real y) = -0x1p1019 <= x <= 0x1p1019 && -0x1p1019 <= y <= 0x1p1019;

@@ -178,15 +178,18 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
     out->c[0] = r0.c; out->h[0] = r0.h;
     out->c[1] = r1.c; out->h[1] = r1.h;
     out->c[2] = r2.c; out->h[2] = r2.h;
-    /* the proof reads the inputs again in the final state: they are unchanged */
-    /*@ assert same_in: a->m[0][0] == a00 && a->m[0][1] == a01 && a->m[0][2] == a02
-          && a->m[0][3] == a03 && a->m[1][0] == a10 && a->m[1][1] == a11
-          && a->m[1][2] == a12 && a->m[1][3] == a13 && a->m[2][0] == a20
-          && a->m[2][1] == a21 && a->m[2][2] == a22 && a->m[2][3] == a23
-          && in->c[0] == c0 && in->c[1] == c1 && in->c[2] == c2
-          && in->h[0] == h0 && in->h[1] == h1 && in->h[2] == h2; */
+    /* the values used are the inputs of the pre-state (out may be in) */
+    /*@ assert same_in: \at(a->m[0][0], Pre) == a00 && \at(a->m[0][1], Pre) == a01 && \at(a->m[0][2], Pre) == a02
+          && \at(a->m[0][3], Pre) == a03 && \at(a->m[1][0], Pre) == a10 && \at(a->m[1][1], Pre) == a11
+          && \at(a->m[1][2], Pre) == a12 && \at(a->m[1][3], Pre) == a13 && \at(a->m[2][0], Pre) == a20
+          && \at(a->m[2][1], Pre) == a21 && \at(a->m[2][2], Pre) == a22 && \at(a->m[2][3], Pre) == a23
+          && \at(in->c[0], Pre) == c0 && \at(in->c[1], Pre) == c1 && \at(in->c[2], Pre) == c2
+          && \at(in->h[0], Pre) == h0 && \at(in->h[1], Pre) == h1 && \at(in->h[2], Pre) == h2; */
     /*@ assert same_out: out->c[0] == r0.c && out->h[0] == r0.h
           && out->c[1] == r1.c && out->h[1] == r1.h
           && out->c[2] == r2.c && out->h[2] == r2.h; */
+    /*@ assert cs0: caxis_sound_s(out->c[0], out->h[0], a00, a01, a02, a03, c0, c1, c2, h0, h1, h2); */
+    /*@ assert cs1: caxis_sound_s(out->c[1], out->h[1], a10, a11, a12, a13, c0, c1, c2, h0, h1, h2); */
+    /*@ assert cs2: caxis_sound_s(out->c[2], out->h[2], a20, a21, a22, a23, c0, c1, c2, h0, h1, h2); */
     return (r0.ok && r1.ok && r2.ok) ? CBX_OK : CBX_ERANGE;
 }

@@ -260,13 +260,13 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     out->lo[0] = r0.lo; out->hi[0] = r0.hi;
     out->lo[1] = r1.lo; out->hi[1] = r1.hi;
     out->lo[2] = r2.lo; out->hi[2] = r2.hi;
-    /* the proof reads the inputs again in the final state: they are unchanged */
-    /*@ assert same_in: a->m[0][0] == a00 && a->m[0][1] == a01 && a->m[0][2] == a02
-          && a->m[0][3] == a03 && a->m[1][0] == a10 && a->m[1][1] == a11
-          && a->m[1][2] == a12 && a->m[1][3] == a13 && a->m[2][0] == a20
-          && a->m[2][1] == a21 && a->m[2][2] == a22 && a->m[2][3] == a23
-          && in->lo[0] == l0 && in->lo[1] == l1 && in->lo[2] == l2
-          && in->hi[0] == h0 && in->hi[1] == h1 && in->hi[2] == h2; */
+    /* the values used are the inputs of the pre-state (out may be in) */
+    /*@ assert same_in: \at(a->m[0][0], Pre) == a00 && \at(a->m[0][1], Pre) == a01 && \at(a->m[0][2], Pre) == a02
+          && \at(a->m[0][3], Pre) == a03 && \at(a->m[1][0], Pre) == a10 && \at(a->m[1][1], Pre) == a11
+          && \at(a->m[1][2], Pre) == a12 && \at(a->m[1][3], Pre) == a13 && \at(a->m[2][0], Pre) == a20
+          && \at(a->m[2][1], Pre) == a21 && \at(a->m[2][2], Pre) == a22 && \at(a->m[2][3], Pre) == a23
+          && \at(in->lo[0], Pre) == l0 && \at(in->lo[1], Pre) == l1 && \at(in->lo[2], Pre) == l2
+          && \at(in->hi[0], Pre) == h0 && \at(in->hi[1], Pre) == h1 && \at(in->hi[2], Pre) == h2; */
     /*@ assert same_out: out->lo[0] == r0.lo && out->hi[0] == r0.hi
           && out->lo[1] == r1.lo && out->hi[1] == r1.hi
           && out->lo[2] == r2.lo && out->hi[2] == r2.hi; */

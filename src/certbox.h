@@ -72,11 +72,12 @@ typedef enum cbx_status {
  *   lo[j] > hi[j] for some j        -> CBX_EMPTY,  *out = lo +inf, hi -inf
  *   some axis outside the domain    -> CBX_ERANGE, that axis [-inf, +inf]
  *   otherwise                       -> CBX_OK, every axis proven sound
- * *out may not overlap *a or *in. */
+ * out may be in itself (in-place update); otherwise *out may not overlap
+ * *a or *in. */
 /*@ requires valid_a:   \valid_read(a);
     requires valid_in:  \valid_read(in);
     requires valid_out: \valid(out);
-    requires sep: \separated(out, a) && \separated(out, in);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
     assigns *out;
 
     behavior nan_input:
@@ -90,11 +91,11 @@ typedef enum cbx_status {
     behavior box_input:
       assumes !has_nan(a, in) && !is_empty(in);
       ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: axis_sound(a, in, out, 0);
-      ensures axis1: axis_sound(a, in, out, 1);
-      ensures axis2: axis_sound(a, in, out, 2);
+      ensures axis0: axis_sound{Pre,Here}(a, in, out, 0);
+      ensures axis1: axis_sound{Pre,Here}(a, in, out, 1);
+      ensures axis2: axis_sound{Pre,Here}(a, in, out, 2);
       ensures ok_iff: \result == CBX_OK <==>
-        (row_dom(a, in, 0) && row_dom(a, in, 1) && row_dom(a, in, 2));
+        \at(row_dom(a, in, 0) && row_dom(a, in, 1) && row_dom(a, in, 2), Pre);
     complete behaviors;
     disjoint behaviors;
 */
@@ -114,7 +115,7 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
 
 /* Arvo's center/half-diagonal form: c' = M c + T, h' = |M| h, outward. */
 /*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
-    requires sep: \separated(out, a) && \separated(out, in);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
     assigns *out;
     behavior nan_input:
       assumes cbox_has_nan(a, in);
@@ -125,11 +126,11 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     behavior box_input:
       assumes !cbox_has_nan(a, in) && !cbox_empty(in);
       ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: caxis_sound(a, in, out, 0);
-      ensures axis1: caxis_sound(a, in, out, 1);
-      ensures axis2: caxis_sound(a, in, out, 2);
+      ensures axis0: caxis_sound{Pre,Here}(a, in, out, 0);
+      ensures axis1: caxis_sound{Pre,Here}(a, in, out, 1);
+      ensures axis2: caxis_sound{Pre,Here}(a, in, out, 2);
       ensures ok_iff: \result == CBX_OK <==>
-        (crow_dom(a, in, 0) && crow_dom(a, in, 1) && crow_dom(a, in, 2));
+        \at(crow_dom(a, in, 0) && crow_dom(a, in, 1) && crow_dom(a, in, 2), Pre);
     complete behaviors;
     disjoint behaviors;
 */
