@@ -31,7 +31,7 @@ LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)
 
-.PHONY: mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
+.PHONY: fuzz fuzz-check mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
 all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/demo $(B)/certbox.pc
 
 $(B)/obj/%.o: src/%.c $(HEADERS)
@@ -117,8 +117,9 @@ check: check-deps
 	$(MAKE) test
 	$(MAKE) test-san
 	$(MAKE) install-check
+	$(MAKE) fuzz-check
 	$(MAKE) proof-check
-	@echo "check: 9 passed, 0 failed"
+	@echo "check: 10 passed, 0 failed"
 
 # make install into a scratch DESTDIR, then build a program against it
 # with pkg-config, static and shared.
@@ -145,6 +146,14 @@ uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
 	      $(DESTDIR)$(INCDIR)/certbox.h $(DESTDIR)$(INCDIR)/cbx_spec.h \
 	      $(DESTDIR)$(INCDIR)/cbx_ball.h $(DESTDIR)$(PCDIR)/certbox.pc
+
+# libFuzzer harnesses with the exact GMP oracle (tests/fuzz/); needs clang.
+fuzz: check-deps-test
+	@sh scripts/deps.sh fuzz
+	sh scripts/fuzz.sh 60
+fuzz-check: check-deps-test
+	@sh scripts/deps.sh fuzz
+	sh scripts/fuzz.sh 10
 
 # Mutation check: deliberate faults in a scratch copy must all be caught.
 mutants: check-deps-test

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Install what certbox needs from Debian's packages, when it is absent.
-# Usage: scripts/deps.sh [build|test|proof|all]   (default: all)
+# Usage: scripts/deps.sh [build|test|proof|fuzz|all]   (default: all)
 # Idempotent: a machine that has everything installs nothing.
 set -eu
 what=${1:-all}
@@ -8,7 +8,7 @@ need=""
 have() { command -v "$1" >/dev/null 2>&1; }
 hdr() { [ -f "/usr/include/$1" ] || [ -f "/usr/include/x86_64-linux-gnu/$1" ] \
         || [ -n "$(find /usr/include -name "$1" -print -quit 2>/dev/null)" ]; }
-case $what in build|test|proof|all) ;; *) echo "usage: $0 [build|test|proof|all]" >&2; exit 2;; esac
+case $what in build|test|proof|fuzz|all) ;; *) echo "usage: $0 [build|test|proof|fuzz|all]" >&2; exit 2;; esac
 have cc || need="$need gcc"
 have make || need="$need make"
 if [ "$what" != build ]; then
@@ -16,6 +16,12 @@ if [ "$what" != build ]; then
   hdr mpfr.h || need="$need libmpfr-dev"
   have g++ || need="$need g++"
   have pkg-config || need="$need pkg-config"
+fi
+if [ "$what" = fuzz ] || [ "$what" = all ]; then
+  # libFuzzer and the sanitizer runtimes of clang (only recommended by clang)
+  have clang || need="$need clang"
+  [ -n "$(find /usr/lib/llvm-* -name 'libclang_rt.fuzzer-x86_64.a' -print -quit 2>/dev/null)" ] \
+    || need="$need libclang-rt-14-dev"
 fi
 if [ "$what" = proof ] || [ "$what" = all ]; then
   have frama-c || need="$need frama-c-base"

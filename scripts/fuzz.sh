@@ -1,0 +1,133 @@
+#!/bin/sh
+# libFuzzer harnesses of certbox with an exact-rational (GMP) oracle.
+#
+#   sh scripts/fuzz.sh [SECONDS [HARNESS...]]
+#
+# SECONDS: time per harness (default 60), passed to -max_total_time.
+# HARNESS: any of transform_box transform_cbox box_to_cbox cbox_to_box
+#          sphere_box ellipsoid_box (default: all six, one after the other).
+#
+# Each harness (tests/fuzz/fuzz_<name>.c) is built with clang
+# -fsanitize=fuzzer,address,undefined, linking the library sources src/*.c
+# directly and tests/exact_util.c, into build/fuzz/; its seed corpus
+# (tests/fuzz/corpus/<name>/, written by tests/fuzz/make_corpus.c) is copied
+# to the scratch directory build/fuzz/run/<name>/corpus, which the run then
+# grows; crash reproducers go to build/fuzz/run/<name>/ (crash-*, ...), and
+# the full log to build/fuzz/run/<name>/log.  A harness abort()s when the
+# oracle fails; the log then shows the decoded input and output.
+# Replay a reproducer: build/fuzz/fuzz_<name> build/fuzz/run/<name>/crash-...
+#
+# Per harness it prints the executions, the corpus size (files) and the
+# crashes found.  Builds and runs are under nice -n 19.
+# Needs clang with libFuzzer (Debian bookworm: clang and libclang-rt-14-dev);
+# installed with apt-get when absent and running as root (FUZZ_NO_INSTALL=1:
+# never install).  FUZZ_CC: the compiler (default clang).
+# Exit status: 0 no crash, 1 some harness found a crash (or failed to run),
+# 2 clang/libFuzzer (or GMP/MPFR) unavailable, or a usage error.
+set -u
+
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+cd "$ROOT" || exit 2
+SECS=${1:-60}
+[ $# -gt 0 ] && shift
+ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box"
+HARNESSES=${*:-$ALL}
+B=build/fuzz
+NICE="nice -n 19"
+CLANG=${FUZZ_CC:-clang}
+
+case $SECS in ''|*[!0-9]*) echo "usage: $0 [SECONDS [HARNESS...]]" >&2; exit 2;; esac
+for h in $HARNESSES; do
+    [ -f "tests/fuzz/fuzz_$h.c" ] || { echo "fuzz: unknown harness '$h' (one of: $ALL)" >&2; exit 2; }
+done
+
+# ---- clang with libFuzzer ------------------------------------------------
+mkdir -p "$B" || exit 2
+cat > "$B/probe.c" <<'EOF'
+#include <stddef.h>
+#include <stdint.h>
+int LLVMFuzzerTestOneInput(const uint8_t *d, size_t n);
+int LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; (void)n; return 0; }
+EOF
+probe() {
+    command -v "$CLANG" >/dev/null 2>&1 \
+    && "$CLANG" -fsanitize=fuzzer,address,undefined "$B/probe.c" -o "$B/probe" >/dev/null 2>&1 \
+    && "$B/probe" -runs=1 >/dev/null 2>&1
+}
+apt_install() { # install the packages that apt-cache knows; 1 if none
+    pk=""
+    for p in "$@"; do
+        apt-cache show "$p" >/dev/null 2>&1 && pk="$pk $p"
+    done
+    [ -n "$pk" ] || return 1
+    echo "fuzz: installing$pk" >&2
+    # shellcheck disable=SC2086
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends $pk >&2
+}
+if ! probe && [ -z "${FUZZ_NO_INSTALL:-}" ] && [ "$(id -u)" = 0 ] \
+   && command -v apt-get >/dev/null 2>&1; then
+    apt-get update -q >&2
+    command -v "$CLANG" >/dev/null 2>&1 || apt_install clang
+    if command -v "$CLANG" >/dev/null 2>&1 && ! probe; then
+        # libFuzzer and the sanitizer runtimes (only "recommended" by clang)
+        v=$("$CLANG" -dumpversion 2>/dev/null | cut -d. -f1)
+        apt_install "libclang-rt-$v-dev" || apt_install libclang-rt-dev
+    fi
+fi
+if ! probe; then
+    if command -v "$CLANG" >/dev/null 2>&1; then
+        echo "fuzz: $CLANG cannot link -fsanitize=fuzzer,address,undefined (libFuzzer missing);" \
+             "install libclang-rt-<version>-dev; no fuzzing done" >&2
+    else
+        echo "fuzz: clang is unavailable (apt-get install clang libclang-rt-14-dev);" \
+             "no fuzzing done" >&2
+    fi
+    exit 2
+fi
+sh scripts/deps.sh test >/dev/null || { echo "fuzz: GMP/MPFR headers unavailable" >&2; exit 2; }
+
+# ---- build ---------------------------------------------------------------
+CFLAGS="-std=c99 -O1 -g -Wall -Wextra -ffp-contract=off -fno-fast-math \
+ -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+for h in $HARNESSES; do
+    echo "fuzz: building $B/fuzz_$h" >&2
+    # shellcheck disable=SC2086
+    $NICE "$CLANG" $CFLAGS -Isrc -Itests "tests/fuzz/fuzz_$h.c" src/*.c tests/exact_util.c \
+        -lmpfr -lgmp -lm -o "$B/fuzz_$h" || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
+done
+
+# ---- run -----------------------------------------------------------------
+bad=0
+printf '%-16s %12s %8s %8s  %s\n' harness executions corpus crashes result
+for h in $HARNESSES; do
+    run=$B/run/$h
+    rm -rf "$run"
+    mkdir -p "$run/corpus"
+    cp tests/fuzz/corpus/"$h"/* "$run/corpus/"
+    $NICE "./$B/fuzz_$h" -max_total_time="$SECS" -max_len=256 -timeout=20 \
+        -print_final_stats=1 -artifact_prefix="$run/" "$run/corpus" > "$run/log" 2>&1
+    rc=$?
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log" | tail -n 1)
+    [ -n "$execs" ] || execs=$(sed -n 's/^#\([0-9]*\).*/\1/p' "$run/log" | tail -n 1)
+    size=$(find "$run/corpus" -type f | wc -l | tr -d ' ')
+    crashes=$(find "$run" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
+              -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l | tr -d ' ')
+    if [ "$rc" -ne 0 ] || [ "$crashes" -ne 0 ]; then
+        bad=1
+        result="FAIL (exit $rc), log $run/log"
+    else
+        result=ok
+    fi
+    printf '%-16s %12s %8s %8s  %s\n' "$h" "${execs:-?}" "$size" "$crashes" "$result"
+    if [ "$result" != ok ]; then
+        # the oracle's message and the decoded reproducer (or the sanitizer's report)
+        if grep -q 'oracle FAILURE' "$run/log"; then
+            sed -n '/==== certbox fuzz oracle FAILURE/,/^====$/p' "$run/log" | sed 's/^/    /'
+        else
+            grep -E 'ERROR|runtime error|SUMMARY' "$run/log" | head -n 8 | sed 's/^/    /'
+        fi
+        find "$run" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
+             -o -name 'timeout-*' -o -name 'oom-*' \) | sed 's#^#    reproducer: #'
+    fi
+done
+exit $bad
