@@ -19,7 +19,7 @@ def functions(log):
 def owner(goal, names):
     g = goal[len('typed_'):] if goal.startswith('typed_') else goal
     if g.startswith('lemma_'):
-        return 'lemmas (specs/cbx_spec.h)'
+        return 'lemmas (specs/cbx_spec.h, specs/cbx_ball.h)'
     for n in names:
         if g.startswith(n + '_'):
             return n
