@@ -3,14 +3,13 @@
  *
  * The image of the unit ball under y = M p + T has, on axis i, the exact
  * bounds T_i -+ ||M_i|| (row norm): |M_i . p| <= ||M_i|| ||p|| (Cauchy-
- * Schwarz, specs: ball_row) with equality at p = M_i / ||M_i||.  Here the
+ * Schwarz, specs: cover_ball) with equality at p = M_i / ||M_i||.  Here the
  * row norm is bounded from above in binary64: the squares and their sum in
  * round-to-nearest, widened by 2^-50 relative and 2^-1070 absolute, the
  * square root (correctly rounded), widened by 2^-50 relative; then T_i -+ r
- * is rounded outward.  The absolute term puts a floor of about 2^-535 under
- * every radius (squares of rows below ~2^-537 underflow in binary64), so
- * rows of norm below ~2^-480 get a box wider than the exact one by up to
- * 2^-534; containment holds everywhere.
+ * is rounded outward.  Rows with every entry below 2^-300 (whose squares
+ * may underflow) are scaled by 2^600 first and the radius scaled back, both
+ * rounded up (row_radius), so the absolute terms leave no radius floor.
  * An ellipsoid center + rot * diag(radii) * p uses the same kernel on the
  * row |rot_ij * radii_j| rounded up.
  */
