@@ -68,7 +68,7 @@ demo: check-deps-test
 	$(MAKE) $(B)/demo
 	./$(B)/demo
 
-TESTS := exact badinput cbox sphere special chain alias
+TESTS := exact badinput cbox sphere special chain alias halfspace
 test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -76,6 +76,7 @@ test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_cbox 300000 1
 	./$(B)/test_sphere 200000 1
 	./$(B)/test_alias 100000 1
+	./$(B)/test_halfspace 150 1
 	./$(B)/test_chain 1000 20 1
 
 # Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
@@ -86,6 +87,7 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_sphere 30000 2
 	./$(B)/san/test_special
 	./$(B)/san/test_alias 20000 2
+	./$(B)/san/test_halfspace 30 2
 	./$(B)/san/test_chain 1000 10 2
 
 # The public header compiles as C99, C11 and C++.
@@ -161,3 +163,27 @@ mutants: check-deps-test
 
 clean:
 	rm -rf $(B)
+
+# ---- benchmark (issue 5) ---------------------------------------------------
+# make bench        the table (build/bench/bench.md, bench.dat, bench.png)
+# make bench-smoke  the same table on tiny sizes (a few seconds); no plot
+#                   unless gnuplot is already installed
+# tests/bench.c and the baselines of tests/bench_ref.h are built with the
+# library's flags (ALLCFLAGS: -std=c99 -ffp-contract=off -fno-fast-math -O2).
+BENCHARGS      := -n 20000 -r 11 -calls 200000 -exact 20000 -gmp 2000 -cache 1000 -big 4000000
+BENCHSMOKEARGS := -n 2000 -r 5 -calls 20000 -exact 2000 -gmp 200 -cache 1000 -big 100000
+.PHONY: bench bench-smoke
+$(B)/bench: tests/bench.c tests/bench_ref.h $(TESTUTIL) tests/exact_util.h $(B)/libcertbox.a
+	$(CC) $(ALLCFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(ALLCFLAGS)"' \
+	  tests/bench.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+
+bench: check-deps-test
+	@sh scripts/deps.sh bench || echo "bench: note: gnuplot could not be installed; the plot will be skipped"
+	$(MAKE) $(B)/bench
+	./$(B)/bench $(BENCHARGS) -o $(B)/bench
+	@sh scripts/bench_plot.sh $(B)/bench
+
+bench-smoke: check-deps-test
+	$(MAKE) $(B)/bench
+	./$(B)/bench $(BENCHSMOKEARGS) -o $(B)/bench-smoke
+	@sh scripts/bench_plot.sh $(B)/bench-smoke

@@ -21,7 +21,7 @@
 #include "certbox.h"
 #include "exact_util.h"
 
-#define N_SAMPLES 8
+#define N_SAMPLES 9
 
 typedef struct sample {
     const char *title;
@@ -102,13 +102,21 @@ static void make_samples(sample s[N_SAMPLES])
     s[6].a.m[1][2] = NAN;
     s[6].in = s[0].in;
 
-    s[7].title = "outside the proven domain on row 0 (1e300 * 1e300)";
+    s[7].title = "row 0: 1e300 * 1e300 is outside the proven domain (the upper end is lost, the lower end proven)";
     set_row(&s[7].a, 0, 1e300, 0, 0, 0);
     set_row(&s[7].a, 1, 0, 1, 0, 0);
     set_row(&s[7].a, 2, 0, 0, 2, 1);
     set_axis(&s[7].in, 0, 1, 1e300);
     set_axis(&s[7].in, 1, -1, 1);
     set_axis(&s[7].in, 2, 3, 4);
+
+    s[8].title = "half-space x0 >= 1 (x0 in [1, +inf)) under a shear; zero column";
+    set_row(&s[8].a, 0, 1, 0.5, 0, 0);
+    set_row(&s[8].a, 1, -2, 1, 0, 3);
+    set_row(&s[8].a, 2, 0, 0, 1, -1);
+    set_axis(&s[8].in, 0, 1, HUGE_VAL);
+    set_axis(&s[8].in, 1, -1, 1);
+    set_axis(&s[8].in, 2, 3, 4);
 }
 
 static void print_matrix(const cbx_affine *a)
@@ -137,7 +145,27 @@ static void print_axis(xu_exact *x, const sample *s, const cbx_box *out,
     if (st == CBX_EINVAL || st == CBX_EMPTY) {
         printf("\n");
     } else if (oob & (1 << i)) {
-        printf("   outside the domain: whole line\n");
+        /* not a full row: each end on its own (vertex rule) */
+        int e;
+        printf("  ");
+        for (e = 0; e < 2; e++) {
+            int k = xu_end_kind(&s->a, &s->in, i, e);
+            double v[3], end = e ? out->hi[i] : out->lo[i];
+            printf(" %s: ", e ? "hi" : "lo");
+            if (k == XU_END_UNB) printf("unbounded (exact)");
+            else if (k == XU_END_LOST) printf("outside the domain");
+            else if (k == XU_END_WHOLE) printf("infinite map entry");
+            else if (xu_vertex(&s->a, &s->in, i, e, v)) {
+                cbx_box pt;
+                double ex;
+                int j;
+                for (j = 0; j < 3; j++) pt.lo[j] = pt.hi[j] = v[j];
+                xu_row_bounds(x, &s->a, &pt, i);
+                ex = e ? xu_excess_hi(x, end) : xu_excess_lo(x, end);
+                printf("excess %5.2f at the vertex, contains: %s", ex, ex >= 0 ? "yes" : "NO");
+            }
+        }
+        printf("\n");
     } else if (!isfinite(out->lo[i]) || !isfinite(out->hi[i])) {
         printf("   (not finite!)\n");
     } else {

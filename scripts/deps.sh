@@ -1,6 +1,7 @@
 #!/bin/sh
 # Install what certbox needs from Debian's packages, when it is absent.
-# Usage: scripts/deps.sh [build|test|proof|fuzz|all]   (default: all)
+# Usage: scripts/deps.sh [build|test|proof|fuzz|bench|all]   (default: all)
+# bench: the test packages and gnuplot-nox (make bench draws its plot).
 # Idempotent: a machine that has everything installs nothing.
 set -eu
 what=${1:-all}
@@ -8,7 +9,7 @@ need=""
 have() { command -v "$1" >/dev/null 2>&1; }
 hdr() { [ -f "/usr/include/$1" ] || [ -f "/usr/include/x86_64-linux-gnu/$1" ] \
         || [ -n "$(find /usr/include -name "$1" -print -quit 2>/dev/null)" ]; }
-case $what in build|test|proof|fuzz|all) ;; *) echo "usage: $0 [build|test|proof|fuzz|all]" >&2; exit 2;; esac
+case $what in build|test|proof|fuzz|bench|all) ;; *) echo "usage: $0 [build|test|proof|fuzz|bench|all]" >&2; exit 2;; esac
 have cc || need="$need gcc"
 have make || need="$need make"
 if [ "$what" != build ]; then
@@ -22,6 +23,9 @@ if [ "$what" = fuzz ] || [ "$what" = all ]; then
   have clang || need="$need clang"
   [ -n "$(find /usr/lib/llvm-* -name 'libclang_rt.fuzzer-x86_64.a' -print -quit 2>/dev/null)" ] \
     || need="$need libclang-rt-14-dev"
+fi
+if [ "$what" = bench ]; then
+  have gnuplot || need="$need gnuplot-nox"
 fi
 if [ "$what" = proof ] || [ "$what" = all ]; then
   have frama-c || need="$need frama-c-base"

@@ -19,6 +19,7 @@
 #   MUT_EXACT_N   random cases of test_exact   (default 100000)
 #   MUT_CBOX_N    random cases of test_cbox    (default 50000)
 #   MUT_SPHERE_N  random cases of test_sphere  (default 30000)
+#   MUT_HALF_N    random maps of test_halfspace (default 40)
 #   MUT_SEED      seed of the random cases     (default 1)
 #   MUT_TIMEOUT   seconds per test run         (default 30)
 #   MUT_LIST      mutant list                  (default scripts/mutants.txt)
@@ -33,6 +34,7 @@ LIST=${MUT_LIST:-$ROOT/scripts/mutants.txt}
 EXACT_N=${MUT_EXACT_N:-100000}
 CBOX_N=${MUT_CBOX_N:-50000}
 SPHERE_N=${MUT_SPHERE_N:-30000}
+HALF_N=${MUT_HALF_N:-40}
 SEED=${MUT_SEED:-1}
 TMO=${MUT_TIMEOUT:-30}
 NICE="nice -n 19"
@@ -145,8 +147,8 @@ done
 cp -p "$ROOT/Makefile" "$BASE/Makefile"
 rm -rf "$BASE/build"
 
-TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias"
-BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias"
+TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace"
+BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace"
 args_of() {
     case $1 in
     test_badinput) echo "" ;;
@@ -155,6 +157,7 @@ args_of() {
     test_sphere) echo "$SPHERE_N $SEED" ;;
     test_special) echo "" ;;
     test_alias) echo "20000 $SEED" ;;
+    test_halfspace) echo "$HALF_N $SEED" ;;
     esac
 }
 # $NICE, $BINS and the test arguments are meant to be split into words.
@@ -184,7 +187,7 @@ run_tests() {
 T0=$(date +%s)
 mutool check "$LIST" "$BASE" || die "mutant list does not match the sources"
 mkdir -p "$SCR/logs/base"
-echo "mutants: baseline build and tests (exact $EXACT_N, cbox $CBOX_N, sphere $SPHERE_N, seed $SEED)"
+echo "mutants: baseline build and tests (exact $EXACT_N, cbox $CBOX_N, sphere $SPHERE_N, halfspace $HALF_N, seed $SEED)"
 build "$BASE" "$SCR/logs/base/build.log" || { cat "$SCR/logs/base/build.log" >&2; die "baseline does not build"; }
 run_tests "$BASE" "$SCR/logs/base"
 if [ -n "$CAUGHT_BY" ]; then

@@ -108,6 +108,113 @@
 */
 
 /*@ // ---------------------------------------------------------------------
+    // Half-spaces and out-of-domain boxes: each end of an axis on its own.
+    // A box whose ends may be infinite is the real set
+    //   { p : lo_j <= p_j <= hi_j where that end is finite };
+    // (lo = +inf or hi = -inf is an empty box, caught before: no_point).
+    // ---------------------------------------------------------------------
+    predicate map_fin(double m0, double m1, double m2, double t) =
+      \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
+    predicate row_full(double m0, double m1, double m2, double t,
+                       double l0, double h0, double l1, double h1, double l2, double h2) =
+      map_fin(m0, m1, m2, t)
+      && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+      && \is_finite(l2) && \is_finite(h2)
+      && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+
+    // p is in [l, h]; an infinite end is no constraint.
+    predicate ext_in(real p, double l, double h) =
+      (\is_finite(l) ==> l <= p) && (\is_finite(h) ==> p <= h);
+
+    // r is below (above) t + m.p for every real point p of the box.
+    predicate ext_below(real r, real m0, real m1, real m2, real t,
+                        double l0, double h0, double l1, double h1, double l2, double h2) =
+      \forall real p0, p1, p2;
+        ext_in(p0, l0, h0) && ext_in(p1, l1, h1) && ext_in(p2, l2, h2) ==>
+        r <= m0*p0 + m1*p1 + m2*p2 + t;
+    predicate ext_above(real r, real m0, real m1, real m2, real t,
+                        double l0, double h0, double l1, double h1, double l2, double h2) =
+      \forall real p0, p1, p2;
+        ext_in(p0, l0, h0) && ext_in(p1, l1, h1) && ext_in(p2, l2, h2) ==>
+        r >= m0*p0 + m1*p1 + m2*p2 + t;
+
+    // The vertex of [l, h] where m*x is least (vlo) or greatest (vhi):
+    // an end chosen by the sign of m; 0 when m == 0 (0 * inf = 0).
+    logic real vlo(real m, real l, real h) = m > 0 ? l : (m < 0 ? h : 0);
+    logic real vhi(real m, real l, real h) = m > 0 ? h : (m < 0 ? l : 0);
+
+    // m*x is unbounded below (above) on [l, h]: the end it needs is infinite.
+    predicate unb_lo(real m, double l, double h) =
+      (m > 0 && !\is_finite(l)) || (m < 0 && !\is_finite(h));
+    predicate unb_hi(real m, double l, double h) =
+      (m > 0 && !\is_finite(h)) || (m < 0 && !\is_finite(l));
+    predicate row_unb_lo(real m0, real m1, real m2,
+                         double l0, double h0, double l1, double h1, double l2, double h2) =
+      unb_lo(m0, l0, h0) || unb_lo(m1, l1, h1) || unb_lo(m2, l2, h2);
+    predicate row_unb_hi(real m0, real m1, real m2,
+                         double l0, double h0, double l1, double h1, double l2, double h2) =
+      unb_hi(m0, l0, h0) || unb_hi(m1, l1, h1) || unb_hi(m2, l2, h2);
+
+    // The point box at the lower (upper) vertex is in the proven domain.
+    predicate vdom_lo(real m0, real m1, real m2, real t,
+                      double l0, double h0, double l1, double h1, double l2, double h2) =
+      row_in_dom(m0, m1, m2, t, vlo(m0, l0, h0), vlo(m0, l0, h0), vlo(m1, l1, h1),
+                 vlo(m1, l1, h1), vlo(m2, l2, h2), vlo(m2, l2, h2));
+    predicate vdom_hi(real m0, real m1, real m2, real t,
+                      double l0, double h0, double l1, double h1, double l2, double h2) =
+      row_in_dom(m0, m1, m2, t, vhi(m0, l0, h0), vhi(m0, l0, h0), vhi(m1, l1, h1),
+                 vhi(m1, l1, h1), vhi(m2, l2, h2), vhi(m2, l2, h2));
+
+    // One end, computed from its vertex: -inf where the image is unbounded
+    // below; else, in the domain, finite, below every point's image and
+    // tight (12 u S + 2^-1065, S = |t| + sum_j |m_j v_j|); else -inf.
+    predicate ext_lo_end(double r, double m0, double m1, double m2, double t,
+                         double l0, double h0, double l1, double h1, double l2, double h2) =
+      (row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2) ==> \is_minus_infinity(r))
+      && ((!row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+           && vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
+          (\is_finite(r) && ext_below(r, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+           && lo_tight(r, m0, m1, m2, t, vlo(m0, l0, h0), vlo(m0, l0, h0), vlo(m1, l1, h1),
+                       vlo(m1, l1, h1), vlo(m2, l2, h2), vlo(m2, l2, h2))))
+      && ((!row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+           && !vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==> \is_minus_infinity(r));
+    predicate ext_hi_end(double r, double m0, double m1, double m2, double t,
+                         double l0, double h0, double l1, double h1, double l2, double h2) =
+      (row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2) ==> \is_plus_infinity(r))
+      && ((!row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+           && vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
+          (\is_finite(r) && ext_above(r, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+           && hi_tight(r, m0, m1, m2, t, vhi(m0, l0, h0), vhi(m0, l0, h0), vhi(m1, l1, h1),
+                       vhi(m1, l1, h1), vhi(m2, l2, h2), vhi(m2, l2, h2))))
+      && ((!row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+           && !vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==> \is_plus_infinity(r));
+
+    // Sums of per-column facts, over the reals (products are atoms).
+    lemma ext_sum_lo: \forall real r, m0, m1, m2, t, v0, v1, v2, p0, p1, p2;
+      r <= m0*v0 + m1*v1 + m2*v2 + t ==>
+      m0*v0 <= m0*p0 ==> m1*v1 <= m1*p1 ==> m2*v2 <= m2*p2 ==>
+      r <= m0*p0 + m1*p1 + m2*p2 + t;
+    lemma ext_sum_hi: \forall real r, m0, m1, m2, t, v0, v1, v2, p0, p1, p2;
+      r >= m0*v0 + m1*v1 + m2*v2 + t ==>
+      m0*v0 >= m0*p0 ==> m1*v1 >= m1*p1 ==> m2*v2 >= m2*p2 ==>
+      r >= m0*p0 + m1*p1 + m2*p2 + t;
+    // The one nonlinear fact of the half-space proof, with a product as
+    // its trigger (the lemma functions of src/cbx_interval.c use it).
+    // (a named predicate, so that WP's simplifier leaves the product as it is
+    // and the lemma has a trigger).
+    predicate nn_prod(real a, real b) = 0 <= a*b;
+    lemma mul_nonneg: \forall real a, b; 0 <= a ==> 0 <= b ==> nn_prod(a, b);
+    // One column: how the code picks the vertex v where m*x is least
+    // (greatest) on [l, h]: an end by the sign of m, 0 for m == 0.
+    predicate sel_lo(real m, real v, double l, double h) =
+      (m > 0 ==> v == l && \is_finite(l)) && (m < 0 ==> v == h && \is_finite(h))
+      && (m == 0 ==> v == 0);
+    predicate sel_hi(real m, real v, double l, double h) =
+      (m > 0 ==> v == h && \is_finite(h)) && (m < 0 ==> v == l && \is_finite(l))
+      && (m == 0 ==> v == 0);
+*/
+
+/*@ // ---------------------------------------------------------------------
     // The same notions on the public structures.
     // ---------------------------------------------------------------------
     predicate has_nan(cbx_affine *a, cbx_box *b) =
@@ -117,10 +224,13 @@
       || \is_NaN(b->lo[0]) || \is_NaN(b->lo[1]) || \is_NaN(b->lo[2])
       || \is_NaN(b->hi[0]) || \is_NaN(b->hi[1]) || \is_NaN(b->hi[2]);
 
-    // IEEE comparison (also meaningful for infinite bounds).
+    // No real point on axis j: hi < lo (IEEE comparison), or lo = +inf,
+    // or hi = -inf (the set { x real : +inf <= x } is empty).
+    predicate no_point(double l, double h) =
+      \lt_double(h, l) || \is_plus_infinity(l) || \is_minus_infinity(h);
     predicate is_empty(cbx_box *b) =
-      \lt_double(b->hi[0], b->lo[0]) || \lt_double(b->hi[1], b->lo[1])
-      || \lt_double(b->hi[2], b->lo[2]);
+      no_point(b->lo[0], b->hi[0]) || no_point(b->lo[1], b->hi[1])
+      || no_point(b->lo[2], b->hi[2]);
 
     predicate whole_axis(cbx_box *o, integer i) =
       \is_minus_infinity(o->lo[i]) && \is_plus_infinity(o->hi[i]);
@@ -152,32 +262,43 @@
       && hi_tight(o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
                   b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
 
-    // What the function promises on one axis, on the values themselves:
-    // proven inside the domain, the whole line [-inf, +inf] outside it.
+    // What the function promises on one axis, on the values themselves.
+    //  full row (every input finite, in the domain): Arvo's kernel, the
+    //    8-corner statement and the tightness bound;
+    //  otherwise, finite map row: each end on its own (ext_lo_end,
+    //    ext_hi_end): infinite box ends are half-spaces, a zero
+    //    coefficient contributes nothing (0 * inf = 0);
+    //  an infinite map entry: the whole line [-inf, +inf].
     predicate axis_sound_s(double lo, double hi, double m0, double m1, double m2, double t,
                            double l0, double h0, double l1, double h1, double l2, double h2) =
-      ((\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-        && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-        && \is_finite(l2) && \is_finite(h2)
-        && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
+      (row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==>
          (\is_finite(lo) && \is_finite(hi)
           && below8(lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
           && above8(hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
           && lo_tight(lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
           && hi_tight(hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)))
-      && (!(\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-        && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-        && \is_finite(l2) && \is_finite(h2)
-        && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
+      && ((!row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) && map_fin(m0, m1, m2, t)) ==>
+         (ext_lo_end(lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+          && ext_hi_end(hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)))
+      && (!map_fin(m0, m1, m2, t) ==>
          (\is_minus_infinity(lo) && \is_plus_infinity(hi)));
 
-    // The same on the public structures: the inputs read at label I, the
-    // output at label O (the output may be the input box itself).
-    predicate axis_sound{I,O}(cbx_affine *a, cbx_box *b, cbx_box *o, integer i) =
-      axis_sound_s(\at(o->lo[i], O), \at(o->hi[i], O),
-                   \at(a->m[i][0], I), \at(a->m[i][1], I), \at(a->m[i][2], I), \at(a->m[i][3], I),
-                   \at(b->lo[0], I), \at(b->hi[0], I), \at(b->lo[1], I), \at(b->hi[1], I),
-                   \at(b->lo[2], I), \at(b->hi[2], I));
+    // The axis is computed without loss: every finite end is proven and
+    // every infinite end is one where the exact image is unbounded.
+    predicate axis_ok_s(double m0, double m1, double m2, double t,
+                        double l0, double h0, double l1, double h1, double l2, double h2) =
+      row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+      || (map_fin(m0, m1, m2, t)
+          && (row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+              || vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2))
+          && (row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+              || vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)));
+
+    // Axis i is computed without loss (status CBX_OK): see axis_ok_s.
+    predicate row_ok(cbx_affine *a, cbx_box *b, integer i) =
+      axis_ok_s(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
+
 */
 
 /*@ // ---------------------------------------------------------------------
@@ -260,30 +381,54 @@
       && cbox_tight(o->c[i], o->h[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
                     b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2]);
 
-    // One axis on the values: the kernel's statement inside the domain,
-    // (0, +inf) outside it.
+    // A column whose coefficient is 0 is dropped from a row (0 * inf = 0):
+    // its center and half-width count as 0, whatever they are.
+    logic real dz(real m, real x) = m == 0 ? 0 : x;
+
+    predicate crow_full(double m0, double m1, double m2, double t,
+                        double c0, double c1, double c2, double h0, double h1, double h2) =
+      \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+      && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
+      && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
+      && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
+    // The row with its zero-coefficient columns dropped is finite and in
+    // the domain.
+    predicate crow_dfull(double m0, double m1, double m2, double t,
+                         double c0, double c1, double c2, double h0, double h1, double h2) =
+      map_fin(m0, m1, m2, t)
+      && (m0 != 0 ==> \is_finite(c0) && \is_finite(h0))
+      && (m1 != 0 ==> \is_finite(c1) && \is_finite(h1))
+      && (m2 != 0 ==> \is_finite(c2) && \is_finite(h2))
+      && crow_in_dom(m0, m1, m2, t, dz(m0, c0), dz(m1, c1), dz(m2, c2),
+                     dz(m0, h0), dz(m1, h1), dz(m2, h2));
+
+    // One axis on the values: the kernel's statement on a full row; on a
+    // row that is full once its zero-coefficient columns are dropped, the
+    // same statement on the dropped row; (0, +inf) otherwise.
     predicate caxis_sound_s(double oc, double oh, double m0, double m1, double m2, double t,
                             double c0, double c1, double c2, double h0, double h1, double h2) =
-      ((\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-        && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
-        && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
-        && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)) ==>
+      (crow_full(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) ==>
          (\is_finite(oc) && \is_finite(oh)
           && cbox_corners(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
           && cbox_tight(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2)))
-      && (!(\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-        && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
-        && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
-        && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)) ==>
+      && ((!crow_full(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
+           && crow_dfull(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)) ==>
+         (\is_finite(oc) && \is_finite(oh)
+          && cbox_corners(oc, oh, m0, m1, m2, t, dz(m0, c0), dz(m1, c1), dz(m2, c2),
+                          dz(m0, h0), dz(m1, h1), dz(m2, h2))
+          && cbox_tight(oc, oh, m0, m1, m2, t, dz(m0, c0), dz(m1, c1), dz(m2, c2),
+                        dz(m0, h0), dz(m1, h1), dz(m2, h2))))
+      && ((!crow_full(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
+           && !crow_dfull(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)) ==>
          (oc == 0 && \is_plus_infinity(oh)));
 
-    // The same on the public structures: inputs at label I, output at O
-    // (the output may be the input cbox itself).
-    predicate caxis_sound{I,O}(cbx_affine *a, cbx_cbox *b, cbx_cbox *o, integer i) =
-      caxis_sound_s(\at(o->c[i], O), \at(o->h[i], O),
-                    \at(a->m[i][0], I), \at(a->m[i][1], I), \at(a->m[i][2], I), \at(a->m[i][3], I),
-                    \at(b->c[0], I), \at(b->c[1], I), \at(b->c[2], I),
-                    \at(b->h[0], I), \at(b->h[1], I), \at(b->h[2], I));
+    // Axis i is computed without loss (status CBX_OK).
+    predicate crow_ok(cbx_affine *a, cbx_cbox *b, integer i) =
+      crow_full(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2])
+      || crow_dfull(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
+                    b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2]);
+
 
     // Conversions: one axis in their domain (finite, magnitude <= 2^1019).
     predicate conv_dom(real x, real y) = -0x1p1019 <= x <= 0x1p1019 && -0x1p1019 <= y <= 0x1p1019;

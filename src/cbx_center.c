@@ -76,32 +76,42 @@ static cbox_res cbox_axis(double m0, double m1, double m2, double t,
 
 typedef struct cbox_axis_result { double c, h; int ok; } cbox_axis_result;
 
-/* The kernel inside the domain, (0, +inf) outside it. */
-/*@ assigns \nothing;
+/* The kernel on a full row; else, on a finite map row, the kernel on the
+ * row with its zero-coefficient columns dropped (their c and h count as 0:
+ * 0 * inf = 0); (0, +inf) otherwise. */
+/*@ requires nan: !\is_NaN(c0) && !\is_NaN(c1) && !\is_NaN(c2)
+                  && !\is_NaN(h0) && !\is_NaN(h1) && !\is_NaN(h2);
+    assigns \nothing;
     ensures ok: \result.ok != 0 <==>
-      (\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-       && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
-       && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
-       && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2));
-    ensures in: \result.ok != 0 ==>
-      \is_finite(\result.c) && \is_finite(\result.h)
-      && cbox_corners(\result.c, \result.h, m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
-      && cbox_tight(\result.c, \result.h, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
-    ensures out: \result.ok == 0 ==> \result.c == 0 && \is_plus_infinity(\result.h);
+      (crow_full(m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
+       || crow_dfull(m0, m1, m2, t, c0, c1, c2, h0, h1, h2));
+    ensures sound: caxis_sound_s(\result.c, \result.h, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
 */
 static cbox_axis_result cbox_transform_axis(double m0, double m1, double m2, double t,
                                             double c0, double c1, double c2,
                                             double h0, double h1, double h2)
 {
     cbox_axis_result r;
-    r.ok = cbx_row_ok(m0, m1, m2, t, c0, h0, c1, h1, c2, h2);
-    if (r.ok) {
+    r.c = 0.0;
+    r.h = cbx_pinf();
+    r.ok = 0;
+    if (cbx_row_ok(m0, m1, m2, t, c0, h0, c1, h1, c2, h2)) {
         cbox_res k = cbox_axis(m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
         r.c = k.c;
         r.h = k.h;
-    } else {
-        r.c = 0.0;
-        r.h = cbx_pinf();
+        r.ok = 1;
+    } else if (cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)) {
+        double e0 = m0 == 0.0 ? 0.0 : c0, g0 = m0 == 0.0 ? 0.0 : h0;
+        double e1 = m1 == 0.0 ? 0.0 : c1, g1 = m1 == 0.0 ? 0.0 : h1;
+        double e2 = m2 == 0.0 ? 0.0 : c2, g2 = m2 == 0.0 ? 0.0 : h2;
+        /*@ assert dz: e0 == dz(m0, c0) && e1 == dz(m1, c1) && e2 == dz(m2, c2)
+                       && g0 == dz(m0, h0) && g1 == dz(m1, h1) && g2 == dz(m2, h2); */
+        if (cbx_row_ok(m0, m1, m2, t, e0, g0, e1, g1, e2, g2)) {
+            cbox_res k = cbox_axis(m0, m1, m2, t, e0, e1, e2, g0, g1, g2);
+            r.c = k.c;
+            r.h = k.h;
+            r.ok = 1;
+        }
     }
     return r;
 }

@@ -71,8 +71,8 @@ cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
         out->c[2] = 0.0; out->h[2] = cbx_pinf();
         return CBX_EINVAL;
     }
-    if (cbx_is_inverted(in->lo[0], in->hi[0]) || cbx_is_inverted(in->lo[1], in->hi[1])
-        || cbx_is_inverted(in->lo[2], in->hi[2])) {
+    if (cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
+        || cbx_no_point(in->lo[2], in->hi[2])) {
         out->c[0] = 0.0; out->h[0] = cbx_ninf();
         out->c[1] = 0.0; out->h[1] = cbx_ninf();
         out->c[2] = 0.0; out->h[2] = cbx_ninf();

@@ -98,4 +98,13 @@ static inline int cbx_is_nan(double x) { return x != x; }
 */
 static inline int cbx_is_inverted(double lo, double hi) { return hi < lo; }
 
+/* 1 if [lo, hi] has no real point: hi < lo, lo = +inf or hi = -inf. */
+/*@ assigns \nothing;
+    ensures \result != 0 <==> no_point(lo, hi);
+*/
+static inline int cbx_no_point(double lo, double hi)
+{
+    return hi < lo || lo > 0x1.fffffffffffffp1023 || hi < -0x1.fffffffffffffp1023;
+}
+
 #endif /* CBX_DOMAIN_H */

@@ -180,16 +180,205 @@ static void set_empty(cbx_box *out)
     out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
 }
 
-/* One output axis: the proven kernel inside the domain, the whole line
- * [-inf, +inf] outside it. */
+/* ---- half-spaces and out-of-domain boxes: one end at a time -----------
+ * Where the row is not full (some box end infinite, or a pair outside the
+ * domain) but the map row is finite, each end of the axis is computed on
+ * its own: the lower end of t + m.x over the box is reached at the vertex
+ * v_j = l_j (m_j > 0), h_j (m_j < 0), 0 (m_j == 0, whatever l_j, h_j are:
+ * 0 * inf = 0).  If a needed end is infinite the image is unbounded there
+ * and the end is -inf, exactly; otherwise the proven kernel runs on the
+ * point box v and the per-column facts of vertex_lo / vertex_hi carry its
+ * bound from the vertex to every real point of the box (ext_below). */
+typedef struct end_result { double v; int ok; } end_result;
+
+/* Lemma functions (empty bodies, no code): their contracts state the sign
+ * step of one column, m*v <= m*p or >= for every point p of [l, h], in the
+ * form nn_prod(a, b) (0 <= a*b) with a, b >= 0 that the lemma mul_nonneg
+ * covers (the provers' nonlinear arithmetic alone is not reliable on
+ * m*v <= m*p); vertex_lo / vertex_hi call them. */
+/*@ requires \is_finite(m) && \is_finite(l) && m > 0;
+    assigns \nothing;
+    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(m, p - l);
+*/
+static void pos_below(double m, double l, double h) { (void)m; (void)l; (void)h; }
+
+/*@ requires \is_finite(m) && \is_finite(h) && m < 0;
+    assigns \nothing;
+    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(-m, h - p);
+*/
+static void neg_below(double m, double l, double h) { (void)m; (void)l; (void)h; }
+
+/*@ requires \is_finite(m) && \is_finite(h) && m > 0;
+    assigns \nothing;
+    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(m, h - p);
+*/
+static void pos_above(double m, double l, double h) { (void)m; (void)l; (void)h; }
+
+/*@ requires \is_finite(m) && \is_finite(l) && m < 0;
+    assigns \nothing;
+    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(-m, p - l);
+*/
+static void neg_above(double m, double l, double h) { (void)m; (void)l; (void)h; }
+
+/* The vertex of [l, h] where m*x is least; ok == 0: m*x unbounded below. */
+/*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
+    assigns \nothing;
+    ensures unb: \result.ok == 0 <==> unb_lo(m, l, h);
+    ensures v: \result.ok != 0 ==> \is_finite(\result.v) && \result.v == vlo(m, l, h);
+    ensures sel: \result.ok != 0 ==> sel_lo(m, \result.v, l, h);
+    ensures col: \result.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m * \result.v <= m * p;
+*/
+static end_result vertex_lo(double m, double l, double h)
+{
+    end_result r;
+    if (m > 0.0) {
+        /*@ assert sg: m > 0; */
+        r.v = l;
+        r.ok = cbx_is_fin(l);
+        if (r.ok) pos_below(m, l, h);
+        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l <= m*p; */
+    } else if (m < 0.0) {
+        /*@ assert sg: m < 0; */
+        r.v = h;
+        r.ok = cbx_is_fin(h);
+        if (r.ok) neg_below(m, l, h);
+        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h <= m*p; */
+    } else {
+        /*@ assert sg: m == 0; */
+        /*@ assert z: \forall real p; m*0 == m*p; */
+        r.v = 0.0;
+        r.ok = 1;
+    }
+    return r;
+}
+
+/* The vertex of [l, h] where m*x is greatest; ok == 0: unbounded above. */
+/*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
+    assigns \nothing;
+    ensures unb: \result.ok == 0 <==> unb_hi(m, l, h);
+    ensures v: \result.ok != 0 ==> \is_finite(\result.v) && \result.v == vhi(m, l, h);
+    ensures sel: \result.ok != 0 ==> sel_hi(m, \result.v, l, h);
+    ensures col: \result.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m * \result.v >= m * p;
+*/
+static end_result vertex_hi(double m, double l, double h)
+{
+    end_result r;
+    if (m > 0.0) {
+        /*@ assert sg: m > 0; */
+        r.v = h;
+        r.ok = cbx_is_fin(h);
+        if (r.ok) pos_above(m, l, h);
+        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h >= m*p; */
+    } else if (m < 0.0) {
+        /*@ assert sg: m < 0; */
+        r.v = l;
+        r.ok = cbx_is_fin(l);
+        if (r.ok) neg_above(m, l, h);
+        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l >= m*p; */
+    } else {
+        /*@ assert sg: m == 0; */
+        /*@ assert z: \forall real p; m*0 == m*p; */
+        r.v = 0.0;
+        r.ok = 1;
+    }
+    return r;
+}
+
+/* The kernels on the point box v (every l_j == h_j == v_j). */
+/*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
+    requires dom: row_in_dom(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures sound: \result <= m0*v0 + m1*v1 + m2*v2 + t;
+    ensures tight: lo_tight(\result, m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+*/
+static double point_lo(double m0, double m1, double m2, double t, double v0, double v1, double v2)
+{
+    return axis_lo(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+}
+
+/*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
+    requires dom: row_in_dom(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures sound: \result >= m0*v0 + m1*v1 + m2*v2 + t;
+    ensures tight: hi_tight(\result, m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+*/
+static double point_hi(double m0, double m1, double m2, double t, double v0, double v1, double v2)
+{
+    return axis_hi(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+}
+
+/* Lower end of one output axis from its vertex; ok == 0: lost to the domain. */
+/*@ requires fin: map_fin(m0, m1, m2, t);
+    requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
+                  && !\is_NaN(l2) && !\is_NaN(h2);
+    assigns \nothing;
+    ensures end: ext_lo_end(\result.v, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures ok: \result.ok != 0 <==> (row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+                                      || vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
+*/
+static end_result ext_lo(double m0, double m1, double m2, double t,
+                         double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    end_result r;
+    end_result v0 = vertex_lo(m0, l0, h0);
+    end_result v1 = vertex_lo(m1, l1, h1);
+    end_result v2 = vertex_lo(m2, l2, h2);
+    if (!v0.ok || !v1.ok || !v2.ok) {
+        r.v = cbx_ninf();
+        r.ok = 1;
+        return r;
+    }
+    if (!cbx_row_ok(m0, m1, m2, t, v0.v, v0.v, v1.v, v1.v, v2.v, v2.v)) {
+        r.v = cbx_ninf();
+        r.ok = 0;
+        return r;
+    }
+    r.v = point_lo(m0, m1, m2, t, v0.v, v1.v, v2.v);
+    r.ok = 1;
+    return r;
+}
+
+/* Upper end of one output axis from its vertex (mirror of ext_lo). */
+/*@ requires fin: map_fin(m0, m1, m2, t);
+    requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
+                  && !\is_NaN(l2) && !\is_NaN(h2);
+    assigns \nothing;
+    ensures end: ext_hi_end(\result.v, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures ok: \result.ok != 0 <==> (row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
+                                      || vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
+*/
+static end_result ext_hi(double m0, double m1, double m2, double t,
+                         double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    end_result r;
+    end_result v0 = vertex_hi(m0, l0, h0);
+    end_result v1 = vertex_hi(m1, l1, h1);
+    end_result v2 = vertex_hi(m2, l2, h2);
+    if (!v0.ok || !v1.ok || !v2.ok) {
+        r.v = cbx_pinf();
+        r.ok = 1;
+        return r;
+    }
+    if (!cbx_row_ok(m0, m1, m2, t, v0.v, v0.v, v1.v, v1.v, v2.v, v2.v)) {
+        r.v = cbx_pinf();
+        r.ok = 0;
+        return r;
+    }
+    r.v = point_hi(m0, m1, m2, t, v0.v, v1.v, v2.v);
+    r.ok = 1;
+    return r;
+}
+
+/* One output axis: the proven kernel on a full row, each end from its
+ * vertex on a finite map row, the whole line [-inf, +inf] otherwise. */
 typedef struct axis_result { double lo, hi; int ok; } axis_result;
 
-/*@ assigns \nothing;
-    ensures ok: \result.ok != 0 <==>
-      (\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
-       && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-       && \is_finite(l2) && \is_finite(h2)
-       && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
+/*@ requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
+                  && !\is_NaN(l2) && !\is_NaN(h2);
+    assigns \nothing;
+    ensures ok: \result.ok != 0 <==> axis_ok_s(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     ensures sound: axis_sound_s(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
 static axis_result transform_axis(double m0, double m1, double m2, double t,
@@ -197,13 +386,20 @@ static axis_result transform_axis(double m0, double m1, double m2, double t,
                                   double l2, double h2)
 {
     axis_result r;
-    r.ok = cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    if (r.ok) {
+    if (cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) {
         r.lo = axis_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         r.hi = axis_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+        r.ok = 1;
+    } else if (cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)) {
+        end_result lo = ext_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+        end_result hi = ext_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+        r.lo = lo.v;
+        r.hi = hi.v;
+        r.ok = lo.ok && hi.ok;
     } else {
         r.lo = cbx_ninf();
         r.hi = cbx_pinf();
+        r.ok = 0;
     }
     return r;
 }
@@ -228,15 +424,15 @@ static int any_nan(const cbx_affine *a, const cbx_box *in)
     return 0;
 }
 
-/* 1 if hi < lo on some axis (specs: is_empty). */
+/* 1 if some axis has no real point (specs: is_empty). */
 /*@ requires \valid_read(in);
     assigns \nothing;
     ensures \result != 0 <==> is_empty(in);
 */
 static int any_inverted(const cbx_box *in)
 {
-    return cbx_is_inverted(in->lo[0], in->hi[0]) || cbx_is_inverted(in->lo[1], in->hi[1])
-           || cbx_is_inverted(in->lo[2], in->hi[2]);
+    return cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
+           || cbx_no_point(in->lo[2], in->hi[2]);
 }
 
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)

@@ -91,11 +91,20 @@ typedef enum cbx_status {
     behavior box_input:
       assumes !has_nan(a, in) && !is_empty(in);
       ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: axis_sound{Pre,Here}(a, in, out, 0);
-      ensures axis1: axis_sound{Pre,Here}(a, in, out, 1);
-      ensures axis2: axis_sound{Pre,Here}(a, in, out, 2);
+      ensures axis0: axis_sound_s(out->lo[0], out->hi[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre), \at(a->m[0][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis1: axis_sound_s(out->lo[1], out->hi[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre), \at(a->m[1][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis2: axis_sound_s(out->lo[2], out->hi[2],
+        \at(a->m[2][0], Pre), \at(a->m[2][1], Pre), \at(a->m[2][2], Pre), \at(a->m[2][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
       ensures ok_iff: \result == CBX_OK <==>
-        \at(row_dom(a, in, 0) && row_dom(a, in, 1) && row_dom(a, in, 2), Pre);
+        \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
     complete behaviors;
     disjoint behaviors;
 */
@@ -126,11 +135,20 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     behavior box_input:
       assumes !cbox_has_nan(a, in) && !cbox_empty(in);
       ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: caxis_sound{Pre,Here}(a, in, out, 0);
-      ensures axis1: caxis_sound{Pre,Here}(a, in, out, 1);
-      ensures axis2: caxis_sound{Pre,Here}(a, in, out, 2);
+      ensures axis0: caxis_sound_s(out->c[0], out->h[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre), \at(a->m[0][3], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->c[2], Pre),
+        \at(in->h[0], Pre), \at(in->h[1], Pre), \at(in->h[2], Pre));
+      ensures axis1: caxis_sound_s(out->c[1], out->h[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre), \at(a->m[1][3], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->c[2], Pre),
+        \at(in->h[0], Pre), \at(in->h[1], Pre), \at(in->h[2], Pre));
+      ensures axis2: caxis_sound_s(out->c[2], out->h[2],
+        \at(a->m[2][0], Pre), \at(a->m[2][1], Pre), \at(a->m[2][2], Pre), \at(a->m[2][3], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->c[2], Pre),
+        \at(in->h[0], Pre), \at(in->h[1], Pre), \at(in->h[2], Pre));
       ensures ok_iff: \result == CBX_OK <==>
-        \at(crow_dom(a, in, 0) && crow_dom(a, in, 1) && crow_dom(a, in, 2), Pre);
+        \at(crow_ok(a, in, 0) && crow_ok(a, in, 1) && crow_ok(a, in, 2), Pre);
     complete behaviors;
     disjoint behaviors;
 */

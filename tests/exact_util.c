@@ -13,8 +13,12 @@ const int xu_class_k[XU_NCLASS] = {
 
 const char *const xu_flag_name[XU_NFLAGS] = {
     "status", "out-set", "special-out", "oob-axes", "finite",
-    "containment", "proven-tight", "corners", "cross-LH", "inputs"
+    "containment", "proven-tight", "corners", "cross-LH",
+    "inf-end", "end-finite", "end-contain", "end-proven", "end-corners",
+    "end-cross", "inputs"
 };
+
+const char xu_end_char[XU_NEND + 1] = "AFULW";
 
 /* ---------------------------------------------------------------------- */
 /* Domain and expected status                                             */
@@ -35,11 +39,17 @@ int xu_has_nan(const cbx_affine *a, const cbx_box *in)
     return 0;
 }
 
+/* isinf() and a sign test: exact, and independent of the library's
+ * comparisons with DBL_MAX. */
+static int xu_is_pinf(double d) { return d > 0 && isinf(d); }
+static int xu_is_ninf(double d) { return d < 0 && isinf(d); }
+
 int xu_is_empty(const cbx_box *in)
 {
     int j;
     for (j = 0; j < 3; j++)
-        if (in->lo[j] > in->hi[j]) return 1;
+        if (in->lo[j] > in->hi[j] || xu_is_pinf(in->lo[j]) || xu_is_ninf(in->hi[j]))
+            return 1;
     return 0;
 }
 
@@ -75,11 +85,78 @@ int xu_oob_mask(const cbx_affine *a, const cbx_box *in)
     return mask;
 }
 
+int xu_map_row_finite(const cbx_affine *a, int i)
+{
+    return isfinite(a->m[i][0]) && isfinite(a->m[i][1]) && isfinite(a->m[i][2])
+           && isfinite(a->m[i][3]);
+}
+
+/* The rule-B vertex: for the lower end the box end where m_j x is least,
+ * chosen by the sign of m_j (exact comparisons with 0; -0.0 == 0); m_j == 0
+ * contributes 0 whatever the box (0 * inf = 0 over the reals). */
+int xu_vertex(const cbx_affine *a, const cbx_box *in, int i, int upper, double v[3])
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        double m = a->m[i][j], c;
+        if (m == 0) {
+            v[j] = 0.0;
+            continue;
+        }
+        if ((m > 0) != (upper != 0)) c = in->lo[j]; /* m > 0 lower, m < 0 upper */
+        else c = in->hi[j];
+        if (isinf(c)) return 0; /* -inf below / +inf above: no real point is
+                                   outside it, so the image is unbounded */
+        v[j] = c;
+    }
+    return 1;
+}
+
+int xu_end_kind(const cbx_affine *a, const cbx_box *in, int i, int upper)
+{
+    double v[3];
+    int j;
+    if (xu_row_in_domain(a, in, i)) return XU_END_FULL;
+    if (!xu_map_row_finite(a, i)) return XU_END_WHOLE;
+    if (!xu_vertex(a, in, i, upper, v)) return XU_END_UNB;
+    for (j = 0; j < 3; j++)
+        if (!xu_pair_in_domain(a->m[i][j], v[j])) return XU_END_LOST;
+    if (!(fabs(a->m[i][3]) <= ldexp(1.0, 1018))) return XU_END_LOST;
+    return XU_END_VERTEX;
+}
+
+static int xu_kind_is_loss(int k) { return k == XU_END_LOST || k == XU_END_WHOLE; }
+
+int xu_row_loss(const cbx_affine *a, const cbx_box *in, int i)
+{
+    return xu_kind_is_loss(xu_end_kind(a, in, i, 0))
+           || xu_kind_is_loss(xu_end_kind(a, in, i, 1));
+}
+
+int xu_loss_mask(const cbx_affine *a, const cbx_box *in)
+{
+    int i, mask = 0;
+    for (i = 0; i < 3; i++)
+        if (xu_row_loss(a, in, i)) mask |= 1 << i;
+    return mask;
+}
+
+void xu_ends_str(const cbx_affine *a, const cbx_box *in, char s[9])
+{
+    int i, n = 0;
+    for (i = 0; i < 3; i++) {
+        if (i) s[n++] = ' ';
+        s[n++] = xu_end_char[xu_end_kind(a, in, i, 0)];
+        s[n++] = xu_end_char[xu_end_kind(a, in, i, 1)];
+    }
+    s[n] = '\0';
+}
+
 cbx_status xu_expected_status(const cbx_affine *a, const cbx_box *in)
 {
     if (xu_has_nan(a, in)) return CBX_EINVAL;
     if (xu_is_empty(in)) return CBX_EMPTY;
-    return xu_oob_mask(a, in) ? CBX_ERANGE : CBX_OK;
+    return xu_loss_mask(a, in) ? CBX_ERANGE : CBX_OK;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -166,6 +243,26 @@ void xu_row_bounds(xu_exact *x, const cbx_affine *a, const cbx_box *in, int i)
         }
         /* |m| max(|lo|,|hi|) = max(|m lo|, |m hi|) */
         xu_add_abs(x->S, mpz_cmpabs(x->pl, x->ph) >= 0 ? x->pl : x->ph);
+    }
+}
+
+void xu_vertex_bounds(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                      int i, int upper)
+{
+    double v[3];
+    mpz_ptr V = upper ? x->H : x->L;
+    int j;
+    if (!xu_vertex(a, in, i, upper, v)) { /* misuse: leave a defined value */
+        mpz_set_ui(V, 0);
+        mpz_set_ui(x->S, 0);
+        return;
+    }
+    xu_scaled_d(x, V, a->m[i][3]);
+    mpz_abs(x->S, V);
+    for (j = 0; j < 3; j++) {
+        xu_scaled_prod(x, x->pl, a->m[i][j], v[j]);
+        mpz_add(V, V, x->pl);
+        xu_add_abs(x->S, x->pl);
     }
 }
 
@@ -315,9 +412,6 @@ static void xu_fail(xu_verdict *v, int flag, const char *why)
     v->failed = 1;
 }
 
-static int xu_is_pinf(double d) { return d > 0 && isinf(d); }
-static int xu_is_ninf(double d) { return d < 0 && isinf(d); }
-
 /* The whole output must be lo = L0, hi = H0 on every axis (EINVAL/EMPTY). */
 static void xu_check_special(xu_verdict *v, const cbx_box *out, int whole)
 {
@@ -396,6 +490,136 @@ static void xu_check_axis(xu_exact *x, xu_verdict *v, const cbx_affine *a,
     }
 }
 
+/* Rule B, the mpq path (independent of xu_vertex): the 8 corners of the
+ * box in extended arithmetic.  Term j of corner c is 0 for m_j == 0 (0 * inf
+ * = 0), +-inf for an infinite coordinate (the sign of m_j times that of the
+ * coordinate), else the exact m_j c_j.  A corner with both a +inf and a
+ * -inf term has no value (skipped; such a row is unbounded on both sides,
+ * which other corners show).  The least (greatest) corner value is the
+ * exact inf (sup) of the image over the real points of the box.
+ * Sets x->qmin / x->qmax when finite; *min_inf = 1 when the inf is -inf,
+ * *max_inf = 1 when the sup is +inf. */
+static void xu_ext_corners(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                           int i, int *min_inf, int *max_inf)
+{
+    unsigned c;
+    int j, have_min = 0, have_max = 0;
+    *min_inf = *max_inf = 0;
+    for (c = 0; c < 8; c++) {
+        int neg = 0, pos = 0;
+        mpq_set_d(x->q, a->m[i][3]);
+        for (j = 0; j < 3; j++) {
+            double m = a->m[i][j], cj = (c >> j) & 1u ? in->hi[j] : in->lo[j];
+            if (m == 0) continue;
+            if (isinf(cj)) {
+                if ((m > 0) == (cj > 0)) pos = 1;
+                else neg = 1;
+                continue;
+            }
+            mpq_set_d(x->qa, m);
+            mpq_set_d(x->qb, cj);
+            mpq_mul(x->qa, x->qa, x->qb);
+            mpq_add(x->q, x->q, x->qa);
+        }
+        if (neg && pos) continue;
+        if (neg) *min_inf = 1;
+        else if (pos) *max_inf = 1;
+        else {
+            if (!have_min || mpq_cmp(x->q, x->qmin) < 0) mpq_set(x->qmin, x->q);
+            if (!have_max || mpq_cmp(x->q, x->qmax) > 0) mpq_set(x->qmax, x->q);
+            have_min = have_max = 1;
+        }
+    }
+    /* every column has an end whose term is not +inf (not -inf): the
+     * corner of those ends has a value, so a finite inf exists whenever
+     * *min_inf is 0 (have_min); the same for the sup */
+    if (!have_min) *min_inf = 1;
+    if (!have_max) *max_inf = 1;
+}
+
+static const char *const xu_end_word[XU_NEND] = {
+    "full-row", "vertex", "unbounded", "lost", "whole-line"
+};
+
+/* Rule B, one end (upper = 0: lower end). */
+static void xu_check_end(xu_exact *x, xu_verdict *v, const cbx_affine *a,
+                         const cbx_box *in, const cbx_box *out, int i, int upper,
+                         int corners)
+{
+    double e = upper ? out->hi[i] : out->lo[i];
+    const char *nm = upper ? "hi" : "lo";
+    int k = v->ax[i].end_kind[upper];
+    char why[200];
+
+    if (k == XU_END_UNB || k == XU_END_LOST) {
+        v->applied[XU_F_INFEND]++;
+        if (!(upper ? xu_is_pinf(e) : xu_is_ninf(e))) {
+            snprintf(why, sizeof why, "axis %d: %s end must be %s (%s) but is %.17g", i, nm,
+                     upper ? "+inf" : "-inf", xu_end_word[k], e);
+            xu_fail(v, XU_F_INFEND, why);
+        }
+    } else {
+        int g;
+        v->applied[XU_F_ENDFIN]++;
+        if (!isfinite(e)) {
+            snprintf(why, sizeof why, "axis %d: %s end must be finite (vertex in the domain) "
+                     "but is %.17g", i, nm, e);
+            xu_fail(v, XU_F_ENDFIN, why);
+            return;
+        }
+        xu_vertex_bounds(x, a, in, i, upper);
+        xu_unit_den(x);
+        v->applied[XU_F_ENDCONT]++;
+        v->applied[XU_F_ENDPROVEN]++;
+        if (upper) xu_gap_hi(x, e);
+        else xu_gap_lo(x, e);
+        g = mpz_sgn(x->d);
+        v->ax[i].ex_end[upper] = xu_ratio53(x->d, x->e);
+        v->ax[i].end_checked[upper] = 1;
+        v->ax[i].end_tiny[upper] = mpz_sizeinbase(x->S, 2) <= XU_SHIFT - 1074 + 53 + XU_TINY;
+        if (g < 0) {
+            snprintf(why, sizeof why, "axis %d: %s end %s the exact vertex value (excess %.3g)",
+                     i, nm, upper ? "below" : "above", v->ax[i].ex_end[upper]);
+            xu_fail(v, XU_F_ENDCONT, why);
+        }
+        if (!xu_gap_within_proven(x)) {
+            snprintf(why, sizeof why, "axis %d: %s end beyond 12uS_v+2^-1065 (excess %.3g)", i,
+                     nm, v->ax[i].ex_end[upper]);
+            xu_fail(v, XU_F_ENDPROVEN, why);
+        }
+    }
+
+    if (corners) {
+        int min_inf, max_inf, unb;
+        xu_ext_corners(x, a, in, i, &min_inf, &max_inf);
+        unb = upper ? max_inf : min_inf;
+        v->applied[XU_F_ENDCROSS]++;
+        if (unb != (k == XU_END_UNB)) {
+            snprintf(why, sizeof why, "axis %d: mpq corners say the image is %s on the %s "
+                     "side, the vertex rule says %s", i, unb ? "unbounded" : "bounded", nm,
+                     xu_end_word[k]);
+            xu_fail(v, XU_F_ENDCROSS, why);
+        } else if (k == XU_END_VERTEX) {
+            xu_vertex_bounds(x, a, in, i, upper);
+            xu_scaled_to_q(x->qa, upper ? x->H : x->L);
+            if (!mpq_equal(x->qa, upper ? x->qmax : x->qmin)) {
+                snprintf(why, sizeof why, "axis %d: mpq corner %s != the fixed-point vertex "
+                         "value", i, upper ? "sup" : "inf");
+                xu_fail(v, XU_F_ENDCROSS, why);
+            }
+        }
+        if (isfinite(e)) {
+            v->applied[XU_F_ENDCORNER]++;
+            mpq_set_d(x->qb, e);
+            if (unb || (upper ? mpq_cmp(x->qb, x->qmax) < 0 : mpq_cmp(x->qb, x->qmin) > 0)) {
+                snprintf(why, sizeof why, "axis %d: an extended corner image is %s the finite "
+                         "%s end (mpq)", i, upper ? "above" : "below", nm);
+                xu_fail(v, XU_F_ENDCORNER, why);
+            }
+        }
+    }
+}
+
 static void xu_check_box_result(xu_exact *x, xu_verdict *v,
                                 const cbx_affine *a, const cbx_box *in,
                                 const cbx_box *out, int corners)
@@ -403,37 +627,37 @@ static void xu_check_box_result(xu_exact *x, xu_verdict *v,
     int i;
     char why[96];
     v->oob_mask = xu_oob_mask(a, in);
+    v->loss_mask = xu_loss_mask(a, in);
     for (i = 0; i < 3; i++) {
-        if (v->oob_mask & (1 << i)) {
+        int klo = xu_end_kind(a, in, i, 0), khi = xu_end_kind(a, in, i, 1);
+        v->ax[i].end_kind[0] = klo;
+        v->ax[i].end_kind[1] = khi;
+        if (klo == XU_END_WHOLE) {
             v->applied[XU_F_OOB]++;
             if (!xu_is_ninf(out->lo[i]) || !xu_is_pinf(out->hi[i])) {
-                snprintf(why, sizeof why, "axis %d out of domain but not [-inf,+inf]", i);
+                snprintf(why, sizeof why, "axis %d: infinite map entry but not [-inf,+inf]", i);
                 xu_fail(v, XU_F_OOB, why);
             }
-        } else {
+        } else if (klo == XU_END_FULL) {
             xu_check_axis(x, v, a, in, out, i, corners);
+        } else {
+            xu_check_end(x, v, a, in, out, i, 0, corners);
+            xu_check_end(x, v, a, in, out, i, 1, corners);
         }
     }
 }
 
-int xu_run_case(xu_exact *x, const cbx_affine *a, const cbx_box *in,
-                cbx_box *out, int corners, xu_verdict *v)
+int xu_check_result(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                    const cbx_box *out, cbx_status got, int corners,
+                    xu_verdict *v)
 {
-    cbx_affine a0 = *a;
-    cbx_box in0 = *in;
     int i;
     char why[96];
 
-    /* NaN pre-fill: any field the library forgets to write stays NaN */
-    for (i = 0; i < 3; i++) out->lo[i] = out->hi[i] = NAN;
-
     memset(v, 0, sizeof *v);
-    v->got = cbx_transform_box(a, in, out);
+    for (i = 0; i < 3; i++) v->ax[i].end_kind[0] = v->ax[i].end_kind[1] = -1;
+    v->got = got;
     v->expected = xu_expected_status(a, in);
-
-    v->applied[XU_F_INPUT]++;
-    if (memcmp(&a0, a, sizeof a0) != 0 || memcmp(&in0, in, sizeof in0) != 0)
-        xu_fail(v, XU_F_INPUT, "the call modified its inputs");
 
     v->applied[XU_F_STATUS]++;
     if (v->got != v->expected) {
@@ -451,6 +675,27 @@ int xu_run_case(xu_exact *x, const cbx_affine *a, const cbx_box *in,
     if (v->expected == CBX_EINVAL) xu_check_special(v, out, 1);
     else if (v->expected == CBX_EMPTY) xu_check_special(v, out, 0);
     else xu_check_box_result(x, v, a, in, out, corners);
+    return v->failed;
+}
+
+int xu_run_case(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                cbx_box *out, int corners, xu_verdict *v)
+{
+    cbx_affine a0 = *a;
+    cbx_box in0 = *in;
+    cbx_status got;
+    int i, changed;
+
+    /* NaN pre-fill: any field the library forgets to write stays NaN */
+    for (i = 0; i < 3; i++) out->lo[i] = out->hi[i] = NAN;
+
+    got = cbx_transform_box(a, in, out);
+    changed = memcmp(&a0, a, sizeof a0) != 0 || memcmp(&in0, in, sizeof in0) != 0;
+    /* check against the inputs as given (a call that changed them is
+     * reported below; the oracle must not read the changed ones) */
+    xu_check_result(x, &a0, &in0, out, got, corners, v);
+    v->applied[XU_F_INPUT]++;
+    if (changed) xu_fail(v, XU_F_INPUT, "the call modified its inputs");
     return v->failed;
 }
 
@@ -505,6 +750,21 @@ void xu_stats_add(xu_stats *s, const xu_verdict *v, const cbx_affine *a,
     }
     for (i = 0; i < 3; i++) {
         const xu_axis *ax = &v->ax[i];
+        int e;
+        for (e = 0; e < 2; e++) {
+            if (ax->end_kind[e] >= 0 && ax->end_kind[e] < XU_NEND)
+                s->ends_kind[ax->end_kind[e]]++;
+            if (!ax->end_checked[e]) continue;
+            if (ax->end_tiny[e]) {
+                if (s->vends_tiny == 0 || ax->ex_end[e] > s->max_vend_tiny)
+                    s->max_vend_tiny = ax->ex_end[e];
+                s->vends_tiny++;
+            } else {
+                if (s->vends == 0 || ax->ex_end[e] > s->max_vend) s->max_vend = ax->ex_end[e];
+                s->sum_vend += ax->ex_end[e];
+                s->vends++;
+            }
+        }
         if (!ax->checked) continue;
         if (s->axes == 0 || ax->ex_lo > s->max_lo) s->max_lo = ax->ex_lo;
         if (s->axes == 0 || ax->ex_hi > s->max_hi) s->max_hi = ax->ex_hi;
@@ -520,7 +780,8 @@ void xu_stats_add(xu_stats *s, const xu_verdict *v, const cbx_affine *a,
 
 static const char *const xu_flag_unit[XU_NFLAGS] = {
     "cases", "cases", "cases", "axes", "axes",
-    "axes", "axes", "axes", "axes", "cases"
+    "axes", "axes", "axes", "axes",
+    "ends", "ends", "ends", "ends", "ends", "ends", "cases"
 };
 
 void xu_stats_print(FILE *f, const char *title, const xu_stats *s)
@@ -535,7 +796,17 @@ void xu_stats_print(FILE *f, const char *title, const xu_stats *s)
         fprintf(f, "  check %-12s %10ld %-5s checked, %6ld failed\n",
                 xu_flag_name[k], s->flag_checked[k], xu_flag_unit[k],
                 s->flag_fail[k]);
-    fprintf(f, "  in-domain axes checked: %ld (exactly equal to the exact "
+    fprintf(f, "  ends by rule: full-row A %ld, vertex F %ld, unbounded U %ld, "
+               "lost L %ld, whole-line W %ld\n", s->ends_kind[XU_END_FULL],
+            s->ends_kind[XU_END_VERTEX], s->ends_kind[XU_END_UNB], s->ends_kind[XU_END_LOST],
+            s->ends_kind[XU_END_WHOLE]);
+    if (s->vends + s->vends_tiny)
+        fprintf(f, "  vertex ends (rule B, finite) checked: %ld; excess (units of u*S_v + "
+                   "2^-1074): max %.4f mean %.4f over %ld ends with u*S_v >= 2^%d*eta, "
+                   "max %.4f over %ld below\n", s->vends + s->vends_tiny, s->max_vend,
+                s->vends ? s->sum_vend / (double)s->vends : 0.0, s->vends, XU_TINY,
+                s->max_vend_tiny, s->vends_tiny);
+    fprintf(f, "  in-domain (full-row) axes checked: %ld (exactly equal to the exact "
                "image: %ld)\n", s->axes, s->axes_exact);
     if (s->axes == 0) return;
     fprintf(f, "  excess lo: max %.4f  mean %.4f   (units of u*S + 2^-1074)\n",
@@ -659,6 +930,51 @@ int xu_cbox_row_in_domain(const cbx_affine *a, const cbx_cbox *in, int i)
         if (!xu_pair_in_domain(a->m[i][j], in->h[j])) return 0;
     }
     return fabs(a->m[i][3]) <= ldexp(1.0, 1018);
+}
+
+const char xu_cax_char[XU_NCAX + 1] = "ADW";
+
+void xu_cbox_dropped(const cbx_affine *a, const cbx_cbox *in, int i, cbx_cbox *d)
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        int z = a->m[i][j] == 0; /* exact; true for -0.0, false for NaN */
+        d->c[j] = z ? 0.0 : in->c[j];
+        d->h[j] = z ? 0.0 : in->h[j];
+    }
+}
+
+int xu_cbox_axis_kind(const cbx_affine *a, const cbx_cbox *in, int i)
+{
+    cbx_cbox d;
+    if (xu_cbox_row_in_domain(a, in, i)) return XU_CAX_FULL;
+    /* xu_pair_in_domain is false for an infinite m or coordinate, and the
+     * bound on t is false for an infinite t: no separate finiteness test */
+    xu_cbox_dropped(a, in, i, &d);
+    if (xu_cbox_row_in_domain(a, &d, i)) return XU_CAX_DROP;
+    return XU_CAX_LOST;
+}
+
+int xu_cbox_loss_mask(const cbx_affine *a, const cbx_cbox *in)
+{
+    int i, mask = 0;
+    for (i = 0; i < 3; i++)
+        if (xu_cbox_axis_kind(a, in, i) == XU_CAX_LOST) mask |= 1 << i;
+    return mask;
+}
+
+void xu_cbox_kinds_str(const cbx_affine *a, const cbx_cbox *in, char s[4])
+{
+    int i;
+    for (i = 0; i < 3; i++) s[i] = xu_cax_char[xu_cbox_axis_kind(a, in, i)];
+    s[3] = '\0';
+}
+
+cbx_status xu_cbox_expected_status(const cbx_affine *a, const cbx_cbox *in)
+{
+    if (xu_cbox_has_nan(a, in)) return CBX_EINVAL;
+    if (xu_cbox_is_empty(in)) return CBX_EMPTY;
+    return xu_cbox_loss_mask(a, in) ? CBX_ERANGE : CBX_OK;
 }
 
 void xu_scaled_sh(mpz_t z, double v, unsigned long sh)

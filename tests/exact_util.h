@@ -12,10 +12,33 @@
  *   - a plain mpq_t path (mpq_set_d, mpq_mul, mpq_add) for the 8 corners,
  *     used on a subset of cases to check the containment without relying on
  *     "L_i and H_i are the extreme corners", and to cross-check the
- *     fixed-point L_i and H_i themselves.
+ *     fixed-point L_i and H_i themselves; for rule B (below) the corners
+ *     are extended reals (an infinite coordinate gives a +-inf term, a zero
+ *     coefficient a 0 term), and their inf / sup cross-check the vertex
+ *     rule: unbounded exactly when the rule says so, else equal to the
+ *     fixed-point vertex value.
  *
  * Units: excess = (L - out.lo) / (u S + eta)  and  (out.hi - H) / (u S + eta)
  * with u = 2^-53, eta = 2^-1074.
+ *
+ * The rules of cbx_transform_box, per output axis i (row m = m[i][0..2],
+ * t = m[i][3]), for an input without NaN whose box has a real point:
+ *   (A) "full row": m, t and all six box ends finite and the row in the
+ *       proven domain (xu_row_in_domain): the kernel's finite box, the
+ *       8 corners inside, tightness 12 u S + 2^-1065;
+ *   (B) otherwise, m and t finite: each end on its own, from its vertex
+ *       v_j = lo[j] (m_j > 0), hi[j] (m_j < 0), 0 (m_j == 0, also -0.0)
+ *       for the lower end, mirrored for the upper end.  A needed v_j that
+ *       is infinite: the image is unbounded there, the end is exactly
+ *       -inf / +inf and that is no loss ("U").  Else, with every
+ *       (m_j, v_j) in a class and |t| <= 2^1018: a finite end, on the
+ *       right side of the exact vertex value t + sum_j m_j v_j (the exact
+ *       inf / sup of the image over the box, infinite ends read as
+ *       half-spaces) and within 12 u S_v + 2^-1065 of it,
+ *       S_v = |t| + sum_j |m_j v_j| ("F").  Else -inf / +inf, a loss ("L");
+ *   (C) an infinite m_j or t: the whole line [-inf, +inf], a loss ("W").
+ * Status CBX_OK iff no axis has a loss, else CBX_ERANGE.  A box end
+ * lo = +inf or hi = -inf (or hi < lo) has no real point: CBX_EMPTY.
  */
 #ifndef EXACT_UTIL_H
 #define EXACT_UTIL_H
@@ -45,15 +68,49 @@ extern const int xu_class_k[XU_NCLASS];
 
 int xu_is_nan(double x);
 int xu_has_nan(const cbx_affine *a, const cbx_box *in);
+/* Some axis has no real point: hi < lo, lo = +inf or hi = -inf (the
+ * empty rule of cbx_transform_box and cbx_box_to_cbox). */
 int xu_is_empty(const cbx_box *in);
 /* (m, c) lies in one magnitude class; false for non-finite m or c. */
 int xu_pair_in_domain(double m, double c);
 /* Row i of the output is in the proven domain (all 10 inputs it reads are
  * finite, each (m[i][j], lo[j]) and (m[i][j], hi[j]) in a class, and
- * |m[i][3]| <= 2^1018).  Meaningful only without NaN. */
+ * |m[i][3]| <= 2^1018): rule (A), a "full row".  Meaningful only without
+ * NaN. */
 int xu_row_in_domain(const cbx_affine *a, const cbx_box *in, int i);
-/* Bit i set when row i is outside the domain. */
+/* Bit i set when row i is not a full row (rule B or C applies).  Since
+ * the half-space rule this is NOT the set of rows with a loss (see
+ * xu_loss_mask): a row outside the domain may still have proven ends. */
 int xu_oob_mask(const cbx_affine *a, const cbx_box *in);
+/* m[i][0..3] all finite (rule C applies to row i otherwise). */
+int xu_map_row_finite(const cbx_affine *a, int i);
+
+/* What one end of output axis i must be (input without NaN, not empty). */
+enum {
+    XU_END_FULL,   /* 'A' rule A: finite, the full-row kernel             */
+    XU_END_VERTEX, /* 'F' rule B: finite, from the vertex, proven         */
+    XU_END_UNB,    /* 'U' rule B: exact image unbounded there: -inf/+inf,
+                          no loss                                         */
+    XU_END_LOST,   /* 'L' rule B: vertex outside the domain: -inf/+inf,
+                          a loss                                          */
+    XU_END_WHOLE,  /* 'W' rule C: infinite map entry: whole line, a loss  */
+    XU_NEND
+};
+extern const char xu_end_char[XU_NEND + 1]; /* "AFULW" */
+/* The kind of the lower (upper = 0) or upper (upper = 1) end. */
+int xu_end_kind(const cbx_affine *a, const cbx_box *in, int i, int upper);
+/* The vertex of rule B for that end: v[j] per the sign of m[i][j] (0 for
+ * m[i][j] == 0).  Returns 0 (v partly unset) when a needed v[j] is
+ * infinite, i.e. the exact image is unbounded on that side. */
+int xu_vertex(const cbx_affine *a, const cbx_box *in, int i, int upper, double v[3]);
+/* 1 when output axis i has a loss (an end that is infinite although the
+ * exact image is bounded there): kinds L or W. */
+int xu_row_loss(const cbx_affine *a, const cbx_box *in, int i);
+/* Bit i set when output axis i has a loss; CBX_ERANGE iff nonzero. */
+int xu_loss_mask(const cbx_affine *a, const cbx_box *in);
+/* The six end kinds as "ab cd ef" (axis 0 lo/hi, axis 1, axis 2), e.g.
+ * "AA UF LW"... (s: at least 9 chars).  Input without NaN, not empty. */
+void xu_ends_str(const cbx_affine *a, const cbx_box *in, char s[9]);
 cbx_status xu_expected_status(const cbx_affine *a, const cbx_box *in);
 
 /* ---- exact bounds ----------------------------------------------------- */
@@ -83,6 +140,11 @@ double xu_excess_hi(xu_exact *x, double hi);
  * lo >= L - (12 u S + 2^-1065), hi <= H + (12 u S + 2^-1065). */
 int xu_lo_within_proven(xu_exact *x, double lo);
 int xu_hi_within_proven(xu_exact *x, double hi);
+/* Rule B: the exact vertex value t + sum_j m_j v_j of row i into x->L
+ * (upper = 0) or x->H (upper = 1), and S_v = |t| + sum_j |m_j v_j| into
+ * x->S (all scaled).  m[i][0..3] finite and xu_vertex() != 0 required. */
+void xu_vertex_bounds(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                      int i, int upper);
 /* Convert a scaled value to a rational, exactly. */
 void xu_scaled_to_q(mpq_t q, const mpz_t v);
 
@@ -107,27 +169,44 @@ enum {
     XU_F_STATUS,     /* status differs from the exactly computed one       */
     XU_F_UNSET,      /* a NaN (our pre-fill) is left in *out               */
     XU_F_SPECIAL,    /* EINVAL / EMPTY output not exactly as specified     */
-    XU_F_OOB,        /* out-of-domain axis not exactly [-inf, +inf]        */
-    XU_F_FINITE,     /* in-domain axis not finite (or lo > hi)             */
-    XU_F_CONTAIN,    /* out.lo > L or out.hi < H (exact)                   */
-    XU_F_PROVEN,     /* beyond 12 u S + 2^-1065 (the proven tightness)     */
-    XU_F_CORNER,     /* mpq 8-corner check failed (subset)                 */
-    XU_F_CROSS,      /* mpq corners disagree with the fixed-point L/H      */
+    XU_F_OOB,        /* rule C axis (infinite map entry) not exactly
+                        [-inf, +inf]                                       */
+    XU_F_FINITE,     /* full-row (rule A) axis not finite (or lo > hi)     */
+    XU_F_CONTAIN,    /* rule A: out.lo > L or out.hi < H (exact)           */
+    XU_F_PROVEN,     /* rule A: beyond 12 u S + 2^-1065 (proven tightness) */
+    XU_F_CORNER,     /* rule A: mpq 8-corner check failed (subset)         */
+    XU_F_CROSS,      /* rule A: mpq corners disagree with fixed-point L/H  */
+    XU_F_INFEND,     /* rule B end that must be infinite (U or L) is not
+                        exactly -inf (lower) / +inf (upper)                */
+    XU_F_ENDFIN,     /* rule B end that must be finite (F) is not          */
+    XU_F_ENDCONT,    /* rule B finite end on the wrong side of the exact
+                        vertex value (not containing the image)            */
+    XU_F_ENDPROVEN,  /* rule B end beyond 12 u S_v + 2^-1065               */
+    XU_F_ENDCORNER,  /* rule B: a finite end fails against the 8 extended
+                        corners, mpq (subset)                              */
+    XU_F_ENDCROSS,   /* rule B: the mpq extended corners' inf / sup (or
+                        unboundedness) disagree with the vertex (subset)   */
     XU_F_INPUT,      /* *a or *in changed by the call                      */
     XU_NFLAGS
 };
 extern const char *const xu_flag_name[XU_NFLAGS];
 
 typedef struct xu_axis {
-    int checked;        /* in-domain, finite output: excess is meaningful */
+    int checked;        /* rule A, finite output: excess is meaningful    */
     double ex_lo, ex_hi;
     int exact;          /* out.lo == L and out.hi == H exactly            */
     int tiny;           /* u S < 2^XU_TINY eta                            */
+    int end_kind[2];    /* XU_END_* of the lower / upper end (-1: none,
+                           i.e. EINVAL or EMPTY)                          */
+    int end_checked[2]; /* rule B finite end: ex_end is meaningful        */
+    double ex_end[2];   /* its excess, units of u S_v + eta               */
+    int end_tiny[2];    /* u S_v < 2^XU_TINY eta                          */
 } xu_axis;
 
 typedef struct xu_verdict {
     cbx_status expected, got;
-    int oob_mask;
+    int oob_mask;       /* rows not full (rule B or C)                     */
+    int loss_mask;      /* rows with a loss (kinds L, W)                   */
     int flag[XU_NFLAGS];
     int applied[XU_NFLAGS];
     int failed;         /* any flag set                                    */
@@ -139,6 +218,12 @@ typedef struct xu_verdict {
  * corners != 0 adds the mpq corner and cross checks.  Returns v->failed. */
 int xu_run_case(xu_exact *x, const cbx_affine *a, const cbx_box *in,
                 cbx_box *out, int corners, xu_verdict *v);
+/* The checks of xu_run_case on a result already computed (status got,
+ * output *out) without calling the library (the input check is not
+ * made).  Clears *v first.  Returns v->failed. */
+int xu_check_result(xu_exact *x, const cbx_affine *a, const cbx_box *in,
+                    const cbx_box *out, cbx_status got, int corners,
+                    xu_verdict *v);
 
 /* ---- statistics ------------------------------------------------------- */
 
@@ -149,7 +234,11 @@ typedef struct xu_stats {
     long flag_checked[XU_NFLAGS]; /* how many cases (axes for per-axis
                                      checks) each check looked at         */
     long status_seen[4];          /* OK, EMPTY, EINVAL, ERANGE expected    */
-    long axes;                    /* in-domain axes with an excess value   */
+    long ends_kind[XU_NEND];      /* ends by expected kind (A F U L W)     */
+    long vends, vends_tiny;       /* rule B finite ends with an excess     */
+    double max_vend, sum_vend;    /* over the ends with u S_v >= 2^XU_TINY eta */
+    double max_vend_tiny;
+    long axes;                    /* rule A axes with an excess value      */
     long axes_exact;
     long over_target;             /* axis sides with excess > 8            */
     double max_lo, max_hi, sum_lo, sum_hi;
@@ -196,8 +285,42 @@ int xu_gap_above_tiny_cap(const mpz_t gap);
 int xu_cbox_has_nan(const cbx_affine *a, const cbx_cbox *in); /* a may be 0 */
 int xu_cbox_is_empty(const cbx_cbox *in);        /* some h[j] < 0 (IEEE)   */
 /* Row i of cbx_transform_cbox in the domain: m[i][0..3], c[], h[] finite,
- * every (m[i][j], c[j]) and (m[i][j], h[j]) in a class, |m[i][3]| <= 2^1018. */
+ * every (m[i][j], c[j]) and (m[i][j], h[j]) in a class, |m[i][3]| <= 2^1018
+ * (rule A below, a "full row"; specs: crow_full). */
 int xu_cbox_row_in_domain(const cbx_affine *a, const cbx_cbox *in, int i);
+
+/* The rules of cbx_transform_cbox, per output axis i (row m = m[i][0..2],
+ * t = m[i][3]), for an input without NaN and with every h[j] >= 0 (IEEE;
+ * -0.0 is not negative), where the input box is [c_j - h_j, c_j + h_j]:
+ *   'A' full row (xu_cbox_row_in_domain): the kernel; finite, the 8
+ *       corners c_j -+ h_j inside, each end within 12 u S + 2^-1065 of the
+ *       exact end (cbox_tight), S = |t| + sum_j |m_j c_j| + |m_j h_j|;
+ *   'D' not full, but the DROPPED row is: every column j with m_j == 0
+ *       (also -0.0) takes c_j' = h_j' = 0 whatever c_j, h_j are (+-inf and
+ *       out-of-domain magnitudes included: 0 * x = 0 for every real x, and
+ *       the image does not depend on x_j), the other columns keep c_j, h_j;
+ *       m, t finite and every (m_j, c_j'), (m_j, h_j') in a class,
+ *       |t| <= 2^1018 (specs: crow_dfull).  The kernel on the dropped row:
+ *       finite, the 8 corners of the dropped box inside (a dropped column
+ *       contributes exactly 0), cbox_tight with S' of the dropped row;
+ *   'W' otherwise (an infinite or out-of-domain entry in a column with
+ *       m_j != 0, an infinite map entry, |t| > 2^1018): exactly c = 0,
+ *       h = +inf, a loss.
+ * Status CBX_OK iff no axis is 'W', else CBX_ERANGE; NaN anywhere (a dropped
+ * column included) -> CBX_EINVAL; some h[j] < 0 (a dropped column included)
+ * -> CBX_EMPTY. */
+enum { XU_CAX_FULL, XU_CAX_DROP, XU_CAX_LOST, XU_NCAX };
+extern const char xu_cax_char[XU_NCAX + 1]; /* "ADW" */
+/* *d = the input with row i's zero-coefficient columns dropped (c = h = 0
+ * where m[i][j] == 0; the other columns copied). */
+void xu_cbox_dropped(const cbx_affine *a, const cbx_cbox *in, int i, cbx_cbox *d);
+/* The kind of output axis i (XU_CAX_*); input without NaN, not empty. */
+int xu_cbox_axis_kind(const cbx_affine *a, const cbx_cbox *in, int i);
+/* Bit i set when axis i is 'W' (a loss). */
+int xu_cbox_loss_mask(const cbx_affine *a, const cbx_cbox *in);
+/* The three kinds as "ADW"-letters, e.g. "ADW" (s: at least 4 chars). */
+void xu_cbox_kinds_str(const cbx_affine *a, const cbx_cbox *in, char s[4]);
+cbx_status xu_cbox_expected_status(const cbx_affine *a, const cbx_cbox *in);
 
 /* Exact containment of t -+ sqrt(s') where s' = s / 2^(2 sh) (s an integer
  * >= 0, sh >= 1074 so that every double times 2^sh is an integer):

@@ -11,8 +11,8 @@
  * random cases (default 300000) from a fixed-seed splitmix64 generator.
  * Every case checks: the status equals the one decided exactly from the
  * contract in certbox.h, every output field is written (NaN pre-fill),
- * EINVAL / EMPTY outputs are exactly as specified, out-of-domain axes are
- * exactly the whole line, in-domain axes are finite and contain the exact
+ * EINVAL / EMPTY outputs are exactly as specified, lost (out-of-domain)
+ * axes are exactly the whole line, the other axes are finite and contain the exact
  * image (exact comparison on integers scaled by 2^2148), the inputs are not
  * modified.  Tightness is measured in units of u*S + eta (u = 2^-53,
  * eta = 2^-1074, S the scale of each function, below), printed as max and
@@ -27,6 +27,26 @@
  * min / max equal the fixed-point C - H / C + H, and the tightness of the
  * contract in specs/cbx_spec.h (cbox_tight): each end within
  * 12 u S + 2^-1065 of the exact end.
+ *
+ * transform_cbox drops zero-coefficient columns (exact_util.h, specs:
+ * crow_dfull): per output axis, kind A (full row: every input finite and
+ * in the domain) is the kernel as above; kind D (not full, but full once
+ * every column with m_j == 0, also -0.0, takes c_j = h_j = 0 whatever c_j,
+ * h_j are, +-inf included) is checked the same way on the DROPPED row: out
+ * finite with h >= 0, the exact image contained (a dropped column adds
+ * exactly 0), the 8 mpq corners of the dropped box inside, and each end
+ * within 12 u S' + 2^-1065 of the exact end, S' = |t| + sum_j |m_j c_j'|
+ * + |m_j h_j'| (checks D-finite, D-contain, D-spec-tight, D-corners,
+ * D-cross-CH); kind W (still not full) must be exactly c = 0, h = +inf and
+ * is a loss (check lost-axes).  CBX_OK iff no axis is W.  A table of
+ * hand-picked zero-column cases (zero coefficients against c or h = +-inf,
+ * out-of-domain magnitudes in a zero column, -0.0, mixes with an infinite
+ * nonzero column, NaN / h < 0 in a zero column) and N/3 random zero-column
+ * cases (corners on every 5th) exercise D; the axes are counted by kind.
+ *
+ * cbx_box_to_cbox is EMPTY when some axis has no real point: hi < lo,
+ * lo = +inf or hi = -inf (xu_is_empty); a half-line or the whole line is
+ * not empty but outside the domain (that axis c = 0, h = +inf).
  *
  * Round trips: box -> cbox -> box contains the original box, and
  * cbox -> box -> cbox contains the original cbox (exactly), whenever both
@@ -62,6 +82,7 @@
 #define MAX_FAIL_LOGS 20
 
 #define INF HUGE_VAL
+#define TC_UNITS "u*S + eta, S = |t| + sum |m_j|(|c_j| + h_j) (D axes: S' of the dropped row)"
 
 /* ---------------------------------------------------------------------- */
 /* Checks, verdicts, statistics                                           */
@@ -71,25 +92,34 @@ enum {
     F_STATUS,    /* status differs from the exactly decided one          */
     F_UNSET,     /* NaN pre-fill left in the output                      */
     F_SPECIAL,   /* EINVAL / EMPTY output not exactly as specified       */
-    F_OOB,       /* out-of-domain axis not exactly the whole line        */
-    F_FINITE,    /* in-domain axis not finite (or lo > hi)               */
+    F_OOB,       /* lost axis (W, out of domain) not exactly the whole line */
+    F_FINITE,    /* in-domain (A) axis not finite (or lo > hi, h < 0)     */
     F_CONTAIN,   /* the exact image is not contained (exact)             */
     F_SPEC,      /* beyond 12 u S + 2^-1065 (cbox_tight, transform only) */
     F_SANITY,    /* > 64 units where u S >= 2^-1000                      */
     F_TINYABS,   /* gap > max(64 (u S + eta), 2^-1000) where u S < 2^-1000 */
     F_CORNER,    /* an mpq corner image is outside the output            */
     F_CROSS,     /* mpq corner min / max != fixed-point C -+ H           */
+    /* transform_cbox, axes of kind D (zero-coefficient columns dropped):
+     * the same checks on the dropped row, S' instead of S               */
+    F_DFINITE,   /* D axis not finite (or h < 0)                         */
+    F_DCONTAIN,  /* D: the exact image (dropped row) not contained       */
+    F_DSPEC,     /* D: beyond 12 u S' + 2^-1065                          */
+    F_DCORNER,   /* D: an mpq corner of the dropped box maps outside     */
+    F_DCROSS,    /* D: mpq corner min / max != fixed-point C' -+ H'      */
     F_ROUND,     /* round trip does not contain the original             */
     F_INPUT,     /* the call modified its input                          */
     NF
 };
 static const char *const f_name[NF] = {
-    "status", "out-set", "special-out", "oob-axes", "finite", "containment",
-    "spec-tight", "sanity<=64", "tiny-abs", "corners", "cross-CH", "round-trip",
-    "inputs"
+    "status", "out-set", "special-out", "lost-axes", "finite", "containment",
+    "spec-tight", "sanity<=64", "tiny-abs", "corners", "cross-CH",
+    "D-finite", "D-contain", "D-spec-tight", "D-corners", "D-cross-CH",
+    "round-trip", "inputs"
 };
 static const char *const f_unit[NF] = {
     "cases", "cases", "cases", "axes", "axes", "axes",
+    "axes", "axes", "axes", "axes", "axes",
     "axes", "axes", "axes", "axes", "axes", "cases", "cases"
 };
 
@@ -111,6 +141,9 @@ typedef struct group {
     long status_seen[4];
     long applied[NF], fails[NF];
     exstat lo, hi, main;     /* main: the quantity the sanity bound uses  */
+    exstat drop;             /* transform_cbox D axes: max of both ends,
+                                units of u S' + eta (not in lo/hi/main)   */
+    long kinds[XU_NCAX];     /* transform_cbox axes by kind (A, D, W)     */
     const char *main_what;
     long rt_n, rt_skipped;   /* round trips checked / second step not OK  */
     double rt_max;           /* round-trip excess, units                  */
@@ -189,6 +222,13 @@ static void g_print(const group *g)
     ex_print("lower end", &g->lo);
     ex_print("upper end", &g->hi);
     ex_print("bounded qty", &g->main);
+    if (g->kinds[XU_CAX_FULL] || g->kinds[XU_CAX_DROP] || g->kinds[XU_CAX_LOST]) {
+        printf("  axes by kind: A full row %ld, D zero columns dropped %ld, "
+               "W lost (c = 0, h = +inf) %ld\n", g->kinds[XU_CAX_FULL],
+               g->kinds[XU_CAX_DROP], g->kinds[XU_CAX_LOST]);
+        if (g->kinds[XU_CAX_DROP])
+            ex_print("D axes", &g->drop);
+    }
     if (g->rt_n || g->rt_skipped)
         printf("  round trips: %ld checked, %ld skipped (2nd step not CBX_OK), "
                "max widening %.4f units\n", g->rt_n, g->rt_skipped, g->rt_max);
@@ -259,15 +299,19 @@ static int within_spec(ctx *k, const mpz_t gap, const mpz_t S)
 /* cbx_transform_cbox: oracle and checks                                  */
 /* ---------------------------------------------------------------------- */
 
-static cbx_status tc_expected(const cbx_affine *a, const cbx_cbox *in, int *oob)
+/* The status by exact_util's rules (A full row, D zero columns dropped,
+ * W lost; exact_util.h); *oob = the W axes (losses), kinds = "ADW"-letters
+ * per axis ("---" for EINVAL / EMPTY). */
+static cbx_status tc_expected(const cbx_affine *a, const cbx_cbox *in, int *oob,
+                              char kinds[4])
 {
-    int i;
+    cbx_status st = xu_cbox_expected_status(a, in);
     *oob = 0;
-    if (xu_cbox_has_nan(a, in)) return CBX_EINVAL;
-    if (xu_cbox_is_empty(in)) return CBX_EMPTY;
-    for (i = 0; i < 3; i++)
-        if (!xu_cbox_row_in_domain(a, in, i)) *oob |= 1 << i;
-    return *oob ? CBX_ERANGE : CBX_OK;
+    strcpy(kinds, "---");
+    if (st != CBX_OK && st != CBX_ERANGE) return st;
+    *oob = xu_cbox_loss_mask(a, in);
+    xu_cbox_kinds_str(a, in, kinds);
+    return st;
 }
 
 /* C = t + sum m_j c_j, H = sum |m_j h_j|, S = |t| + sum |m_j c_j| + H */
@@ -308,9 +352,12 @@ static void tc_corner_q(ctx *k, mpq_t r, const cbx_affine *a,
     }
 }
 
+/* in: the input box the row is checked on (the dropped box for D axes,
+ * drop != 0: then the D-flags are used). */
 static void tc_corners(ctx *k, verdict *v, const cbx_affine *a,
-                       const cbx_cbox *in, const cbx_cbox *out, int i)
+                       const cbx_cbox *in, const cbx_cbox *out, int i, int drop)
 {
+    int f_corner = drop ? F_DCORNER : F_CORNER, f_cross = drop ? F_DCROSS : F_CROSS;
     unsigned cn;
     int bad = 0;
     char why[120];
@@ -324,17 +371,19 @@ static void tc_corners(ctx *k, verdict *v, const cbx_affine *a,
         if (cn == 0 || mpq_cmp(k->q, k->qmin) < 0) mpq_set(k->qmin, k->q);
         if (cn == 0 || mpq_cmp(k->q, k->qmax) > 0) mpq_set(k->qmax, k->q);
     }
-    v->applied[F_CORNER]++;
+    v->applied[f_corner]++;
     if (bad) {
-        snprintf(why, sizeof why, "axis %d: %d corner images outside (mpq)", i, bad);
-        v_fail(v, F_CORNER, why);
+        snprintf(why, sizeof why, "axis %d%s: %d corner images outside (mpq)", i,
+                 drop ? " (D, dropped box)" : "", bad);
+        v_fail(v, f_corner, why);
     }
-    v->applied[F_CROSS]++;
+    v->applied[f_cross]++;
     xu_scaled_to_q(k->qa, k->elo);
     xu_scaled_to_q(k->qb, k->ehi);
     if (!mpq_equal(k->qa, k->qmin) || !mpq_equal(k->qb, k->qmax)) {
-        snprintf(why, sizeof why, "axis %d: mpq corners != fixed-point C -+ H", i);
-        v_fail(v, F_CROSS, why);
+        snprintf(why, sizeof why, "axis %d%s: mpq corners != fixed-point C -+ H", i,
+                 drop ? " (D)" : "");
+        v_fail(v, f_cross, why);
     }
 }
 
@@ -386,12 +435,12 @@ static int tc_run(ctx *k, group *g, const cbx_affine *a, const cbx_cbox *in,
     cbx_affine a0 = *a;
     cbx_cbox in0 = *in;
     int i, oob;
-    char why[160];
+    char why[160], kinds[4];
 
     for (i = 0; i < 3; i++) out->c[i] = out->h[i] = NAN;
     v_init(v);
     v->got = cbx_transform_cbox(a, in, out);
-    v->expected = tc_expected(a, in, &oob);
+    v->expected = tc_expected(a, in, &oob, kinds);
     *mx = 0;
     v->applied[F_INPUT]++;
     if (memcmp(&a0, a, sizeof a0) || memcmp(&in0, in, sizeof in0))
@@ -405,37 +454,48 @@ static int tc_run(ctx *k, group *g, const cbx_affine *a, const cbx_cbox *in,
     for (i = 0; i < 3; i++) {
         int tiny, bad_lo, bad_hi;
         double ulo, uhi;
-        if (oob & (1 << i)) {
+        int kind = xu_cbox_axis_kind(a, in, i), drop = kind == XU_CAX_DROP;
+        int f_fin = drop ? F_DFINITE : F_FINITE, f_cont = drop ? F_DCONTAIN : F_CONTAIN;
+        int f_spec = drop ? F_DSPEC : F_SPEC;
+        const char *dz = drop ? " (D, zero columns dropped)" : "";
+        cbx_cbox dd;
+        const cbx_cbox *use = in;  /* the box the row is checked on */
+        g->kinds[kind]++;
+        if (kind == XU_CAX_LOST) {
             v->applied[F_OOB]++;
-            snprintf(why, sizeof why, "axis %d out of domain but not c = 0, h = +inf", i);
+            snprintf(why, sizeof why, "axis %d lost (W) but not c = 0, h = +inf", i);
             check_cwhole_axis(v, out, i, F_OOB, why);
             continue;
         }
-        v->applied[F_FINITE]++;
-        if (!isfinite(out->c[i]) || !isfinite(out->h[i])) {
-            snprintf(why, sizeof why, "axis %d in domain but out c = %g, h = %g", i,
-                     out->c[i], out->h[i]);
-            v_fail(v, F_FINITE, why);
+        if (drop) {
+            xu_cbox_dropped(a, in, i, &dd);
+            use = &dd;
+        }
+        v->applied[f_fin]++;
+        if (!isfinite(out->c[i]) || !isfinite(out->h[i]) || out->h[i] < 0) {
+            snprintf(why, sizeof why, "axis %d%s: out c = %g, h = %g, not finite with h >= 0",
+                     i, dz, out->c[i], out->h[i]);
+            v_fail(v, f_fin, why);
             continue;
         }
-        tc_row(k, a, in, i);
+        tc_row(k, a, use, i);
         cbox_ends(k, out->c[i], out->h[i]);
         mpz_sub(k->olo, k->elo, k->olo);   /* gap below: (C - H) - (c - h) */
         mpz_sub(k->ohi, k->ohi, k->ehi);   /* gap above: (c + h) - (C + H) */
         tiny = xu_scale_tiny(k->S);
         ulo = side_units(k, k->olo, k->S, tiny, &bad_lo);
         uhi = side_units(k, k->ohi, k->S, tiny, &bad_hi);
-        v->applied[F_CONTAIN]++;
+        v->applied[f_cont]++;
         if (mpz_sgn(k->olo) < 0 || mpz_sgn(k->ohi) < 0) {
-            snprintf(why, sizeof why, "axis %d: not contained (excess lo %.3g, hi %.3g)",
-                     i, ulo, uhi);
-            v_fail(v, F_CONTAIN, why);
+            snprintf(why, sizeof why, "axis %d%s: not contained (excess lo %.3g, hi %.3g)",
+                     i, dz, ulo, uhi);
+            v_fail(v, f_cont, why);
         }
-        v->applied[F_SPEC]++;
+        v->applied[f_spec]++;
         if (!within_spec(k, k->olo, k->S) || !within_spec(k, k->ohi, k->S)) {
-            snprintf(why, sizeof why, "axis %d: beyond 12uS+2^-1065 (excess lo %.3g, hi %.3g)",
-                     i, ulo, uhi);
-            v_fail(v, F_SPEC, why);
+            snprintf(why, sizeof why, "axis %d%s: beyond 12uS+2^-1065 (excess lo %.3g, hi %.3g)",
+                     i, dz, ulo, uhi);
+            v_fail(v, f_spec, why);
         }
         v->applied[tiny ? F_TINYABS : F_SANITY]++;
         if (bad_lo || bad_hi) {
@@ -443,13 +503,18 @@ static int tc_run(ctx *k, group *g, const cbx_affine *a, const cbx_cbox *in,
                      i, ulo, uhi, tiny ? ", tiny scale: gap > 2^-1000" : "");
             v_fail(v, tiny ? F_TINYABS : F_SANITY, why);
         }
-        ex_add(&g->lo, ulo, tiny, mpz_sgn(k->olo) == 0);
-        ex_add(&g->hi, uhi, tiny, mpz_sgn(k->ohi) == 0);
-        ex_add(&g->main, ulo > uhi ? ulo : uhi, tiny,
-               mpz_sgn(k->olo) == 0 && mpz_sgn(k->ohi) == 0);
+        if (drop) {
+            ex_add(&g->drop, ulo > uhi ? ulo : uhi, tiny,
+                   mpz_sgn(k->olo) == 0 && mpz_sgn(k->ohi) == 0);
+        } else {
+            ex_add(&g->lo, ulo, tiny, mpz_sgn(k->olo) == 0);
+            ex_add(&g->hi, uhi, tiny, mpz_sgn(k->ohi) == 0);
+            ex_add(&g->main, ulo > uhi ? ulo : uhi, tiny,
+                   mpz_sgn(k->olo) == 0 && mpz_sgn(k->ohi) == 0);
+        }
         if (!tiny && ulo > *mx) *mx = ulo;
         if (!tiny && uhi > *mx) *mx = uhi;
-        if (corners) tc_corners(k, v, a, in, out, i);
+        if (corners) tc_corners(k, v, a, use, out, i, drop);
     }
     return v->failed;
 }
@@ -767,118 +832,224 @@ typedef struct tc_case {
     cbx_affine a;
     cbx_cbox in;
     cbx_status expect;
-    int oob;
+    int oob;            /* the lost (W) axes                             */
+    const char *kinds;  /* per axis A, D or W ("---": EINVAL / EMPTY)     */
 } tc_case;
 
 static const tc_case tc_hard[] = {
     /* identity on the cbox (0, 1)^3 = [-1, 1]^3 */
-    { "identity, c = 0, h = 1", ID3, CB(0, 1, 0, 1, 0, 1), CBX_OK, 0 },
+    { "identity, c = 0, h = 1", ID3, CB(0, 1, 0, 1, 0, 1), CBX_OK, 0, "AAA" },
     /* identity on a point cbox (h = 0): the image is a point */
-    { "identity, point cbox (h = 0)", ID3, CB(1.5, 0, -2, 0, 3, 0), CBX_OK, 0 },
+    { "identity, point cbox (h = 0)", ID3, CB(1.5, 0, -2, 0, 3, 0), CBX_OK, 0, "AAA" },
     /* h = -0.0 is not < 0: a point, not empty; -0.0 entries and t */
     { "signed permutation with -0.0, h = -0.0",
       MAT(ROW(-0.0, 1, -0.0, -0.0), ROW(-0.0, -0.0, -1, 0), ROW(1, -0.0, 0, -0.0)),
-      CB(-0.0, -0.0, 2, 0.5, -0.0, 0.0), CBX_OK, 0 },
+      CB(-0.0, -0.0, 2, 0.5, -0.0, 0.0), CBX_OK, 0, "AAA" },
     /* all zeros, every sign: image exactly {0}, S = 0 */
     { "all-zero map, signed zeros",
       MAT(ROW(-0.0, -0.0, -0.0, -0.0), ROW(0.0, -0.0, 0.0, 0.0), ROW(-0.0, 0.0, -0.0, 0.0)),
-      CB(-0.0, 0.0, 3, 1, -5, -0.0), CBX_OK, 0 },
+      CB(-0.0, 0.0, 3, 1, -5, -0.0), CBX_OK, 0, "AAA" },
     /* rank deficient: row 1 is zero (image of row 1 is the point t = 5) */
     { "zero row (rank 2) with t = 5",
       MAT(ROW(1, 2, 3, 0), ROW(0, 0, 0, 5), ROW(-1, 0.5, 2, -1)),
-      CB(0.1, 0.2, -0.3, 0.4, 0.5, 0.6), CBX_OK, 0 },
+      CB(0.1, 0.2, -0.3, 0.4, 0.5, 0.6), CBX_OK, 0, "AAA" },
     /* rank 1: every row a multiple of (1, 2, 3) */
     { "rank 1 map",
       MAT(ROW(1, 2, 3, 0), ROW(-2, -4, -6, 1), ROW(0.1, 0.2, 0.30000000000000004, 2)),
-      CB(1e3, 1e-3, -7, 0.25, 0.1, 0.1), CBX_OK, 0 },
+      CB(1e3, 1e-3, -7, 0.25, 0.1, 0.1), CBX_OK, 0, "AAA" },
     /* tiny-angle rotations: cos rounds to 1.0, sin to the angle */
     { "rotation 1e-8 about z",
       MAT(ROW(1.0, -1e-8, 0, 0), ROW(1e-8, 1.0, 0, 0), ROW(0, 0, 1, 0)),
-      CB(0, 1e6, 0, 1, 0, 0), CBX_OK, 0 },
+      CB(0, 1e6, 0, 1, 0, 0), CBX_OK, 0, "AAA" },
     { "rotation 1e-15 about x, translated",
       MAT(ROW(1, 0, 0, 5), ROW(0, 1.0, -1e-15, -1e15), ROW(0, 1e-15, 1.0, 0.25)),
-      CB(0, 1, 1e15, 0, 0, 1e15), CBX_OK, 0 },
+      CB(0, 1, 1e15, 0, 0, 1e15), CBX_OK, 0, "AAA" },
     { "rotation 1e-300 about y",
       MAT(ROW(1.0, 0, 1e-300, 0), ROW(0, 1, 0, 0), ROW(-1e-300, 0, 1.0, 0)),
-      CB(0, 1e300, 1.5, 0.5, 0, 1e-300), CBX_OK, 0 },
+      CB(0, 1e300, 1.5, 0.5, 0, 1e-300), CBX_OK, 0, "AAA" },
     /* a huge translation with a tiny box */
     { "translation 1e15, h = 1e-10",
       MAT(ROW(1, 0, 0, 1e15), ROW(0, 1, 0, -1e15), ROW(0.5, 0.5, 0, 1e15)),
-      CB(0.3, 1e-10, -0.7, 1e-10, 0, 1e-10), CBX_OK, 0 },
+      CB(0.3, 1e-10, -0.7, 1e-10, 0, 1e-10), CBX_OK, 0, "AAA" },
     /* 1e-200 next to 1e200: 1e200 needs class k >= 704, so |c|, |h| <= 2^314 */
     { "1e-200 next to 1e200",
       MAT(ROW(1e200, 1e-200, 1, 0), ROW(-1e-200, 1e200, 0, 1e-200), ROW(1, 1, 1, 0)),
-      CB(1e-200, 1e-200, 3e-201, 2e-200, 1e200, 1e199), CBX_OK, 0 },
+      CB(1e-200, 1e-200, 3e-201, 2e-200, 1e200, 1e199), CBX_OK, 0, "AAA" },
     /* subnormal entries, centres and half-diagonals */
     { "subnormals everywhere",
       MAT(ROW(0x1p-1074, -0x1p-1074, 0x1p-1060, 0x1p-1074),
           ROW(-0x1p-1074, 0x1.8p-1070, 0, -0x1p-1074), ROW(1, -1, 0.5, 0)),
-      CB(0x1p-1074, 0x1p-1074, -0x1p-1073, 0x1p-1074, 0x1p-1022, 0x1p-1030), CBX_OK, 0 },
+      CB(0x1p-1074, 0x1p-1074, -0x1p-1073, 0x1p-1074, 0x1p-1022, 0x1p-1030), CBX_OK, 0, "AAA" },
     /* unit entries, subnormal cbox: c +- h exact, centre of 0.5 * 2^-1074 */
     { "subnormal cbox, entry 0.5",
       MAT(ROW(0.5, 0, 0, 0), ROW(0, 0.5, 0, 0x1p-1074), ROW(0.5, 0.5, 0.5, 0)),
-      CB(0x1p-1074, 0, 0x1p-1074, 0x1p-1074, -0x1p-1074, 0x1p-1074), CBX_OK, 0 },
+      CB(0x1p-1074, 0, 0x1p-1074, 0x1p-1074, -0x1p-1074, 0x1p-1074), CBX_OK, 0, "AAA" },
     /* class 509 at its corner: m = 2^509, c = h = 2^509 */
     { "m = 2^509, c = h = 2^509",
       MAT(ROW(0x1p509, 0, 0, 0), ROW(-0x1p509, 0x1p509, 0, 0),
           ROW(0x1p509, 0x1p509, 0x1p509, 0x1p1018)),
-      CB(0x1p509, 0x1p509, -0x1p509, 0x1p509, 0, 0x1p509), CBX_OK, 0 },
+      CB(0x1p509, 0x1p509, -0x1p509, 0x1p509, 0, 0x1p509), CBX_OK, 0, "AAA" },
     /* class 1018: m = 2^1018 with |c|, h <= 1; t = -2^1018 */
     { "m = 2^1018, |c|, h <= 1, t = -2^1018",
       MAT(ROW(0x1p1018, 0, 0, 0), ROW(0, -0x1p1018, 0, 0x1p1018),
           ROW(0x1p1018, 0, 0, -0x1p1018)),
-      CB(1, 0, -0.5, 0.5, 0, 1), CBX_OK, 0 },
+      CB(1, 0, -0.5, 0.5, 0, 1), CBX_OK, 0, "AAA" },
     /* class 0: m = 1 with c, h = 2^1018; every term 2^1018 */
     { "m = 1, c = h = 2^1018",
       MAT(ROW(1, 1, 1, 0x1p1018), ROW(1, -1, 0, 0), ROW(0, 0, -1, -0x1p1018)),
-      CB(0x1p1018, 0x1p1018, -0x1p1018, 0x1p1018, 0, 0x1p1018), CBX_OK, 0 },
+      CB(0x1p1018, 0x1p1018, -0x1p1018, 0x1p1018, 0, 0x1p1018), CBX_OK, 0, "AAA" },
     /* near cancellation: point cbox and t = -fl(m.c) */
     { "near cancellation t = -fl(m.c), h = 0",
       MAT(ROW(0.1, 0.2, 0.3, -0.6000000000000001),
           ROW(1e-3, 1.1, -0.7, -0.024499999999999966), ROW(1, 1, 1, -3)),
-      CB(1, 0, 1, 0, 1, 0), CBX_OK, 0 },
+      CB(1, 0, 1, 0, 1, 0), CBX_OK, 0, "AAA" },
     /* --- outside the domain ------------------------------------------ */
     /* m = 2^509 with h one ulp beyond 2^509: neither class 509 nor 512 */
     { "m = 2^509, h = 2^509 + ulp (row 2 out)",
       MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0x1p509, 0, 0, 0)),
-      CB(0, P509U, 0, 1, 0, 1), CBX_ERANGE, 4 },
+      CB(0, P509U, 0, 1, 0, 1), CBX_ERANGE, 4, "AAW" },
     /* m = 2^509 with c one ulp beyond 2^509 */
     { "m = 2^509, c = 2^509 + ulp (rows 0, 2 out)",
       MAT(ROW(0x1p509, 0, 0, 0), ROW(0, 1, 0, 0), ROW(-0x1p509, 0, 0, 0)),
-      CB(P509U, 0, 0, 1, 0, 1), CBX_ERANGE, 5 },
+      CB(P509U, 0, 0, 1, 0, 1), CBX_ERANGE, 5, "WAW" },
     /* t one ulp beyond 2^1018 */
     { "t = 2^1018 + ulp (row 1 out)",
       MAT(ROW(1, 0, 0, 0x1p1018), ROW(0, 1, 0, -P1018U), ROW(0, 0, 1, 0)),
-      CB(0, 1, 0, 1, 0, 1), CBX_ERANGE, 2 },
+      CB(0, 1, 0, 1, 0, 1), CBX_ERANGE, 2, "AWA" },
     /* m one ulp beyond 2^1018 even with c = h = 0 */
     { "m = 2^1018 + ulp, c = h = 0 (row 0 out)",
       MAT(ROW(P1018U, 0, 0, 0), ROW(0x1p1018, 0, 0, 0), ROW(0, 0, 0, 0)),
-      CB(0, 0, 1, 1, 1, 1), CBX_ERANGE, 1 },
-    /* zero column but h one ulp beyond 2^1018: outside every class */
-    { "zero column, h = 2^1018 + ulp (all out)", ID3,
-      CB(0, 1, 0, 1, 0, P1018U), CBX_ERANGE, 7 },
-    /* h = +inf: not empty, every row out */
-    { "h = +inf (all out)", ID3, CB(0, 1, 0, INF, 0, 1), CBX_ERANGE, 7 },
-    /* c = -inf with a zero column: still out */
-    { "c = -inf (all out)", ID3, CB(-INF, 0, 0, 1, 0, 1), CBX_ERANGE, 7 },
+      CB(0, 0, 1, 1, 1, 1), CBX_ERANGE, 1, "WAA" },
+    /* h one ulp beyond 2^1018: outside every class; rows 0 and 1 have a
+     * zero coefficient there and drop the column (D), row 2 is lost */
+    { "h2 = 2^1018 + ulp (row 2 lost, rows 0, 1 drop)", ID3,
+      CB(0, 1, 0, 1, 0, P1018U), CBX_ERANGE, 4, "DDW" },
+    /* h = +inf: not empty; only the row with m_11 != 0 is lost */
+    { "h1 = +inf (row 1 lost, rows 0, 2 drop)", ID3, CB(0, 1, 0, INF, 0, 1),
+      CBX_ERANGE, 2, "DWD" },
+    /* c = -inf: only the row with m_00 != 0 is lost */
+    { "c0 = -inf (row 0 lost, rows 1, 2 drop)", ID3, CB(-INF, 0, 0, 1, 0, 1),
+      CBX_ERANGE, 1, "WDD" },
     /* an infinite translation: only its row */
     { "t = +inf (row 2 out)",
       MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0, 1, INF)),
-      CB(0, 1, 0, 1, 0, 1), CBX_ERANGE, 4 },
+      CB(0, 1, 0, 1, 0, 1), CBX_ERANGE, 4, "AAW" },
     /* --- empty and NaN ----------------------------------------------- */
-    { "h = -2^-1074 (empty)", ID3, CB(0, 1, 0, -0x1p-1074, 0, 1), CBX_EMPTY, 0 },
-    { "h = -inf (empty)", ID3, CB(0, 1, 0, 1, 0, -INF), CBX_EMPTY, 0 },
+    { "h = -2^-1074 (empty)", ID3, CB(0, 1, 0, -0x1p-1074, 0, 1), CBX_EMPTY, 0, "---" },
+    { "h = -inf (empty)", ID3, CB(0, 1, 0, 1, 0, -INF), CBX_EMPTY, 0, "---" },
     /* empty wins over out-of-domain */
     { "h < 0 and t = +inf (empty)",
       MAT(ROW(1, 0, 0, INF), ROW(0, 1, 0, 0), ROW(0, 0, 1, 0)),
-      CB(0, -1, 0, 1, 0, 1), CBX_EMPTY, 0 },
-    { "NaN in h", ID3, CB(0, 1, 0, NAN, 0, 1), CBX_EINVAL, 0 },
+      CB(0, -1, 0, 1, 0, 1), CBX_EMPTY, 0, "---" },
+    { "NaN in h", ID3, CB(0, 1, 0, NAN, 0, 1), CBX_EINVAL, 0, "---" },
     { "NaN in t", MAT(ROW(1, 0, 0, 0), ROW(0, 1, 0, NAN), ROW(0, 0, 1, 0)),
-      CB(0, 1, 0, 1, 0, 1), CBX_EINVAL, 0 },
+      CB(0, 1, 0, 1, 0, 1), CBX_EINVAL, 0, "---" },
     /* NaN wins over empty */
-    { "NaN in c and h < 0", ID3, CB(NAN, 1, 0, -1, 0, 1), CBX_EINVAL, 0 },
+    { "NaN in c and h < 0", ID3, CB(NAN, 1, 0, -1, 0, 1), CBX_EINVAL, 0, "---" },
 };
 #define N_TC_HARD ((int)(sizeof tc_hard / sizeof tc_hard[0]))
+
+/* Zero-coefficient columns are dropped (0 * x = 0 for every real x): a
+ * row that is not full but whose dropped row is full (kind D) is computed
+ * by the kernel on the dropped row; a row still not full after dropping is
+ * lost (W: c = 0, h = +inf, CBX_ERANGE).  -0.0 counts as zero; a
+ * subnormal coefficient does not.  NaN and h < 0 in a dropped column still
+ * give EINVAL / EMPTY. */
+static const tc_case tc_drop[] = {
+    /* every row has m_0 == 0: column 0 (c = -inf, h = +inf) is dropped */
+    { "column 0 zero everywhere, c0 = -inf, h0 = +inf",
+      MAT(ROW(0, 1, 2, 3), ROW(0, -1, 0.5, 0), ROW(0, 0.25, -4, -1)),
+      CB(-INF, INF, 1, 0.5, -2, 1), CBX_OK, 0, "DDD" },
+    /* -0.0 coefficients against h = +inf and c = +inf */
+    { "-0.0 coefficients against c1 = +inf, h2 = +inf",
+      MAT(ROW(1, -0.0, -0.0, 0.5), ROW(-2, -0.0, -0.0, -0.0), ROW(3, -0.0, -0.0, 1e300)),
+      CB(0.75, 0.25, INF, 0, 1, INF), CBX_OK, 0, "DDD" },
+    /* +0 and -0 mixed in one column, c = h = +inf */
+    { "+0 / -0 in column 2, c2 = h2 = +inf",
+      MAT(ROW(1, 2, 0.0, 0), ROW(-1, 0.5, -0.0, 7), ROW(0.125, -8, 0.0, -7)),
+      CB(3, 1, -1, 2, INF, INF), CBX_OK, 0, "DDD" },
+    /* huge (out-of-domain) but finite entries in a zero column */
+    { "zero column, c0 = DBL_MAX, h0 = 2^1023",
+      MAT(ROW(0, 1, 0, 0), ROW(-0.0, 0, 1, 0), ROW(0, 1, 1, 1)),
+      CB(DBL_MAX, 0x1p1023, 2, 1, -3, 0.5), CBX_OK, 0, "DDD" },
+    { "zero column, c1 = -(2^1018 + ulp), h1 = 2^1018 + ulp",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 0, 1, 0), ROW(1, -0.0, 1, 0)),
+      CB(1, 1, -P1018U, P1018U, 1, 1), CBX_OK, 0, "DDD" },
+    /* an all-zero map: every column dropped, the image is the point t */
+    { "all-zero map, c = +-inf / DBL_MAX, h = +inf (points t)",
+      MAT(ROW(0, -0.0, 0, 5), ROW(-0.0, 0, -0.0, -0x1p1018), ROW(0, 0, 0, -0.0)),
+      CB(INF, INF, -INF, INF, DBL_MAX, INF), CBX_OK, 0, "DDD" },
+    /* two zero columns in every row, one against c = +inf, one against
+     * h = +inf */
+    { "two zero columns (c0 = inf, h1 = inf) in every row",
+      MAT(ROW(0, 0, 1, 0), ROW(0, -0.0, 2, 1), ROW(-0.0, 0, 3, -1)),
+      CB(INF, 0, 0, INF, 0.5, 0.5), CBX_OK, 0, "DDD" },
+    /* the dropped row at a class corner: m = 2^509, c = h = 2^509, and
+     * t = 2^1018; row 1 has m_0 != 0 against c0 = inf: lost */
+    { "drop, rest at m = 2^509, c = h = 2^509 (row 1 lost)",
+      MAT(ROW(0, 0x1p509, 0, 0x1p1018), ROW(0x1p509, 0, 0, 0), ROW(0, 0, 0x1p509, 0)),
+      CB(INF, INF, 0x1p509, 0x1p509, -0x1p509, 0x1p509), CBX_ERANGE, 2, "DWD" },
+    /* mixes: one zero column dropped, but a nonzero column infinite */
+    { "zero column 0 dropped, nonzero column 2 with h2 = +inf (lost)",
+      MAT(ROW(0, 1, 1, 0), ROW(0, 1, 0, 0), ROW(-0.0, 0, 2, 0)),
+      CB(INF, 1, 0, 1, 0, INF), CBX_ERANGE, 5, "WDW" },
+    { "c0 = -inf: dropped where m_0 = 0, lost where not",
+      MAT(ROW(1, 0, 0, 0), ROW(0, 1, 1, 0), ROW(1, 1, 0, 0)),
+      CB(-INF, 0, 2, 1, 3, 0), CBX_ERANGE, 5, "WDW" },
+    { "each row drops a different column, c0 = +inf",
+      MAT(ROW(0, 1, 1, 0), ROW(1, 0, 1, 0), ROW(1, 1, 0, 0)),
+      CB(INF, 0, 1, 1, 1, 1), CBX_ERANGE, 6, "DWW" },
+    /* dropped, but the rest of the row is outside the domain */
+    { "drop, but t = +inf (lost)",
+      MAT(ROW(0, 1, 0, INF), ROW(0, 1, 0, 0), ROW(0, 0, 1, -INF)),
+      CB(INF, 0, 1, 1, 1, 1), CBX_ERANGE, 5, "WDW" },
+    { "drop, but t = 2^1018 + ulp (lost)",
+      MAT(ROW(0, 1, 0, P1018U), ROW(0, 1, 0, 0x1p1018), ROW(0, 0, 1, 0)),
+      CB(-INF, INF, 1, 1, 1, 1), CBX_ERANGE, 1, "WDD" },
+    { "drop, but m = 2^509 with c = 2^509 + ulp (lost)",
+      MAT(ROW(0, 0x1p509, 0, 0), ROW(0, 1, 0, 0), ROW(0, 0x1p509, 0, 0)),
+      CB(INF, 0, P509U, 0, 1, 1), CBX_ERANGE, 5, "WDW" },
+    { "drop, but an infinite coefficient (lost)",
+      MAT(ROW(0, INF, 0, 0), ROW(0, 1, 0, 0), ROW(0, -INF, 0, 0)),
+      CB(INF, INF, 1, 0, 1, 1), CBX_ERANGE, 5, "WDW" },
+    /* a subnormal coefficient is not zero: not dropped */
+    { "m = 2^-1074 against c0 = +inf (not dropped: lost)",
+      MAT(ROW(0x1p-1074, 1, 0, 0), ROW(-0x1p-1074, 0, 1, 0), ROW(0, 1, 1, 0)),
+      CB(INF, 0, 1, 1, 1, 1), CBX_ERANGE, 3, "WWD" },
+    /* near cancellation: t = -fl(m.c), h = 0; first with every column
+     * finite (full rows, A: the zero columns change nothing), then with
+     * column 2 infinite (dropped in row 0, lost in rows 1, 2) */
+    { "full rows with -0.0, near cancellation (A)",
+      MAT(ROW(0.1, 0.2, -0.0, -0.30000000000000004), ROW(1e-3, 0, 1.1, -1.1009999999999998),
+          ROW(0, 1, 1, -2)),
+      CB(1, 0, 1, 0, 1, 0), CBX_OK, 0, "AAA" },
+    { "drop infinite column, near cancellation, h = 0",
+      MAT(ROW(0.1, 0.2, -0.0, -0.30000000000000004), ROW(1e-3, 0, 1.1, -1.1009999999999998),
+          ROW(0, 1, 1, -2)),
+      CB(1, 0, 1, 0, INF, INF), CBX_ERANGE, 6, "DWW" },
+    /* subnormal scale in the dropped row */
+    { "drop, subnormal remaining row",
+      MAT(ROW(0x1p-1074, 0, -0x1p-1074, 0x1p-1074), ROW(0, 0, 0x1p-1060, 0), ROW(0, 0, 0, 0)),
+      CB(0x1p-1074, 0x1p-1074, -INF, INF, 0x1p-1022, 0x1p-1030), CBX_OK, 0, "DDD" },
+    /* h = -0.0 in a dropped column is not negative */
+    { "h0 = -0.0 and c0 = -inf in a zero column",
+      MAT(ROW(0, 1, 0, 0), ROW(-0.0, 0, 1, 0), ROW(0, 1, 1, 0)),
+      CB(-INF, -0.0, 1, 1, 1, 1), CBX_OK, 0, "DDD" },
+    /* NaN / h < 0 in a dropped column still decide the status */
+    { "NaN c in a zero column (EINVAL)",
+      MAT(ROW(0, 1, 0, 0), ROW(0, 0, 1, 0), ROW(0, 1, 1, 0)),
+      CB(NAN, 0, 1, 1, 1, 1), CBX_EINVAL, 0, "---" },
+    { "NaN h in a zero column (EINVAL)",
+      MAT(ROW(0, 1, 0, 0), ROW(0, 0, 1, 0), ROW(0, 1, 1, 0)),
+      CB(INF, NAN, 1, 1, 1, 1), CBX_EINVAL, 0, "---" },
+    { "h = -1 in a zero column (EMPTY)",
+      MAT(ROW(0, 1, 0, 0), ROW(0, 0, 1, 0), ROW(0, 1, 1, 0)),
+      CB(0, -1, 1, 1, 1, 1), CBX_EMPTY, 0, "---" },
+    { "h = -inf, c = +inf in a zero column (EMPTY)",
+      MAT(ROW(-0.0, 1, 0, 0), ROW(0, 0, 1, 0), ROW(0, 1, 1, 0)),
+      CB(INF, -INF, 1, 1, 1, 1), CBX_EMPTY, 0, "---" },
+};
+#define N_TC_DROP ((int)(sizeof tc_drop / sizeof tc_drop[0]))
 
 typedef struct b2c_case {
     const char *name;
@@ -917,9 +1088,13 @@ static const b2c_case b2c_hard[] = {
     /* 2^1020, DBL_MAX, 1e308 */
     { "2^(CONV_EMAX+1), DBL_MAX, 1e308 (all out)",
       BOX((2 * CLIM), (2 * CLIM), -DBL_MAX, DBL_MAX, 1e308, 1e308), CBX_ERANGE, 7 },
-    /* infinite ends: not empty, out */
-    { "[-inf, inf], [+inf, +inf] (axes 0, 2 out)",
-      BOX(-INF, INF, 0, 1, INF, INF), CBX_ERANGE, 5 },
+    /* infinite ends: a half-line or the whole line is not empty, but out */
+    { "[-inf, inf], [-inf, 0] (axes 0, 2 out)",
+      BOX(-INF, INF, 0, 1, -INF, 0), CBX_ERANGE, 5 },
+    { "[2, +inf] (axis 1 out)", BOX(0, 1, 2, INF, 0, 1), CBX_ERANGE, 2 },
+    /* lo = +inf or hi = -inf: no real point, empty even when lo <= hi */
+    { "[+inf, +inf] (no real point: empty)", BOX(-INF, INF, 0, 1, INF, INF), CBX_EMPTY, 0 },
+    { "[-inf, -inf] (no real point: empty)", BOX(0, 1, -INF, -INF, 0, 1), CBX_EMPTY, 0 },
     /* empty */
     { "lo one ulp above hi (empty)", BOX(0, 1, 0x1.0000000000001p0, 1, 0, 1), CBX_EMPTY, 0 },
     { "[+inf, -inf] (empty)", BOX(0, 1, 0, 1, INF, -INF), CBX_EMPTY, 0 },
@@ -1090,6 +1265,68 @@ static void gen_tc_case(xu_rng *r, cbx_affine *a, cbx_cbox *b)
     }
 }
 
+/* A value no row could use unless its coefficient is zero: +-inf or a
+ * magnitude outside every class (|x| > 2^1018); sg: the sign (h >= 0). */
+static double gen_unusable(xu_rng *r, double sg)
+{
+    switch (xu_rng_int(r, 0, 5)) {
+    case 0: case 1: return sg * INF;
+    case 2: return sg * DBL_MAX;
+    case 3: return sg * P1018U;
+    case 4: return sg * 0x1p1023;
+    default: return sg * xu_gen_mag(r, 1019, 1023);
+    }
+}
+
+/* Zero-coefficient columns (kind D and its neighbours): an in-domain case,
+ * then 1 to 3 columns j get m_ij = +-0.0 in some rows (random sign, so
+ * -0.0 is frequent) and c_j and / or h_j a value outside the domain
+ * (+-inf, DBL_MAX, 2^1018 + ulp, ...) or left ordinary; sometimes a
+ * nonzero column gets such a value too (those rows are lost), t leaves the
+ * domain, or a NaN / a negative h lands in a zero column. */
+static void gen_tc_drop_case(xu_rng *r, cbx_affine *a, cbx_cbox *b)
+{
+    int nz = xu_rng_int(r, 0, 9) < 7 ? 1 : xu_rng_int(r, 2, 3);
+    int first = xu_rng_int(r, 0, 2), n, i, j, p;
+    gen_tc_in_domain(r, a, b);
+    for (n = 0; n < nz; n++) {
+        int rows = xu_rng_int(r, 1, 7);       /* nonempty set of rows */
+        if (xu_rng_int(r, 0, 3) == 0) rows = 7;
+        j = (first + n) % 3;
+        for (i = 0; i < 3; i++)
+            if (rows & (1 << i)) a->m[i][j] = xu_rng_sign(r) * 0.0;
+        switch (xu_rng_int(r, 0, 5)) {
+        case 0: b->c[j] = gen_unusable(r, xu_rng_sign(r)); break;
+        case 1: b->h[j] = gen_unusable(r, 1.0); break;
+        case 2: case 3:
+            b->c[j] = gen_unusable(r, xu_rng_sign(r));
+            b->h[j] = gen_unusable(r, 1.0);
+            break;
+        case 4: b->h[j] = xu_rng_int(r, 0, 1) ? -0.0 : INF;
+                b->c[j] = xu_rng_sign(r) * INF; break;
+        default: break;                        /* ordinary values: A rows */
+        }
+    }
+    p = xu_rng_int(r, 0, 99);
+    j = (first + nz) % 3;                      /* a column not zeroed above */
+    i = xu_rng_int(r, 0, 2);
+    if (p < 20 && nz < 3) {                    /* mix: a nonzero column unusable */
+        if (xu_rng_int(r, 0, 1)) b->c[j] = gen_unusable(r, xu_rng_sign(r));
+        else b->h[j] = gen_unusable(r, 1.0);
+    } else if (p < 25) {                       /* t out of the domain */
+        a->m[i][3] = xu_rng_int(r, 0, 1) ? xu_rng_sign(r) * INF : xu_rng_sign(r) * P1018U;
+    } else if (p < 28) {                       /* a coefficient not quite zero */
+        a->m[i][first] = xu_rng_sign(r) * 0x1p-1074;
+    } else if (p < 30) {                       /* an infinite coefficient */
+        a->m[i][xu_rng_int(r, 0, 2)] = xu_rng_sign(r) * INF;
+    } else if (p < 32) {                       /* NaN in a zero column */
+        if (xu_rng_int(r, 0, 1)) b->c[first] = xu_rng_sign(r) * NAN;
+        else b->h[first] = NAN;
+    } else if (p < 34) {                       /* h < 0 in a zero column */
+        b->h[first] = xu_rng_int(r, 0, 1) ? -INF : -0x1p-1074;
+    }
+}
+
 /* an ordered pair of doubles within 2^emax (never empty) */
 static void gen_conv_interval(xu_rng *r, double *lo, double *hi, int emax)
 {
@@ -1203,31 +1440,43 @@ static void tc_log(long id, const char *what, const cbx_affine *a,
     print_cbox("out", out);
 }
 
-static void run_tc(ctx *k, group *gh, group *gr, long n, uint64_t seed)
+/* One table of hand-picked cases; each is also checked against the
+ * table's own status, lost axes and kinds. */
+static void run_tc_table(ctx *k, group *g, const char *title, const tc_case *tab, int n)
 {
     int h;
-    long c;
-    xu_rng r;
-    fail_logs = 0; /* MAX_FAIL_LOGS per function */
-    printf("-- cbx_transform_cbox: hard cases (%d) --\n", N_TC_HARD);
-    for (h = 0; h < N_TC_HARD; h++) {
-        const tc_case *t = &tc_hard[h];
+    printf("-- cbx_transform_cbox: %s (%d; kinds per axis: A full row, D zero columns "
+           "dropped, W lost) --\n", title, n);
+    for (h = 0; h < n; h++) {
+        const tc_case *t = &tab[h];
         cbx_cbox out;
         verdict v;
         double mx;
         int oob;
-        tc_run(k, gh, &t->a, &t->in, &out, 1, &v, &mx);
-        if (tc_expected(&t->a, &t->in, &oob) != t->expect || oob != t->oob) {
+        char kinds[4];
+        tc_run(k, g, &t->a, &t->in, &out, 1, &v, &mx);
+        if (tc_expected(&t->a, &t->in, &oob, kinds) != t->expect || oob != t->oob
+            || strcmp(kinds, t->kinds) != 0) {
             if (!v.failed)
-                snprintf(v.why, sizeof v.why, "table says %s/oob %d, oracle oob %d",
-                         cbx_status_name(t->expect), t->oob, oob);
+                snprintf(v.why, sizeof v.why, "table says %s/lost %d/%s, oracle lost %d/%s",
+                         cbx_status_name(t->expect), t->oob, t->kinds, oob, kinds);
             v.failed = 1;
         }
-        g_add(gh, &v);
-        printf("  %-44s %-10s max excess %7.3f  %s\n", t->name,
-               cbx_status_name(v.got), mx, v.failed ? "FAIL" : "ok");
-        if (v.failed) tc_log(h, "transform_cbox hard", &t->a, &t->in, &out, &v);
+        g_add(g, &v);
+        printf("  %-52s %-10s %s  max excess %7.3f  %s\n", t->name,
+               cbx_status_name(v.got), kinds, mx, v.failed ? "FAIL" : "ok");
+        if (v.failed) tc_log(h, title, &t->a, &t->in, &out, &v);
     }
+}
+
+static void run_tc(ctx *k, group *gh, group *gd, group *gr, group *grd, long n,
+                   uint64_t seed)
+{
+    long c;
+    xu_rng r;
+    fail_logs = 0; /* MAX_FAIL_LOGS per function */
+    run_tc_table(k, gh, "hard cases", tc_hard, N_TC_HARD);
+    run_tc_table(k, gd, "zero columns dropped", tc_drop, N_TC_DROP);
     r.s = seed;
     for (c = 0; c < n; c++) {
         cbx_affine a;
@@ -1238,6 +1487,18 @@ static void run_tc(ctx *k, group *gh, group *gr, long n, uint64_t seed)
         if (tc_run(k, gr, &a, &in, &out, c % CORNER_EVERY == 0, &v, &mx))
             tc_log(c, "transform_cbox random", &a, &in, &out, &v);
         g_add(gr, &v);
+    }
+    /* zero-column cases: a third of N, corners on every 5th */
+    r.s = seed ^ UINT64_C(0xd00dd00dd00d);
+    for (c = 0; c < n / 3; c++) {
+        cbx_affine a;
+        cbx_cbox in, out;
+        verdict v;
+        double mx;
+        gen_tc_drop_case(&r, &a, &in);
+        if (tc_run(k, grd, &a, &in, &out, c % 5 == 0, &v, &mx))
+            tc_log(c, "transform_cbox random zero-column", &a, &in, &out, &v);
+        g_add(grd, &v);
     }
 }
 
@@ -1356,34 +1617,38 @@ int main(int argc, char **argv)
     long n = (long)arg_num(argc, argv, 1, 300000ULL);
     uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 0xcb0c5eed2024ULL);
     ctx k;
-    group g[6];
+    group g[8];
     long passed = 0, failed = 0;
     int i;
     clock_t t0 = clock();
 
     ctx_init(&k);
-    g_init(&g[0], "cbx_transform_cbox, hard cases", "u*S + eta, S = |t| + sum |m_j|(|c_j| + h_j)");
-    g_init(&g[1], "cbx_transform_cbox, random cases", "u*S + eta, S = |t| + sum |m_j|(|c_j| + h_j)");
-    g_init(&g[2], "cbx_box_to_cbox, hard cases", "u*max(|lo|,|hi|) + eta (sanity on the mean of both ends)");
-    g_init(&g[3], "cbx_box_to_cbox, random cases", "u*max(|lo|,|hi|) + eta (sanity on the mean of both ends)");
-    g_init(&g[4], "cbx_cbox_to_box, hard cases", "u*(|c| + h) + eta");
-    g_init(&g[5], "cbx_cbox_to_box, random cases", "u*(|c| + h) + eta");
+    g_init(&g[0], "cbx_transform_cbox, hard cases", TC_UNITS);
+    g_init(&g[1], "cbx_transform_cbox, zero columns dropped (hand-picked)", TC_UNITS);
+    g_init(&g[2], "cbx_transform_cbox, random cases", TC_UNITS);
+    g_init(&g[3], "cbx_transform_cbox, random zero-column cases", TC_UNITS);
+    g_init(&g[4], "cbx_box_to_cbox, hard cases", "u*max(|lo|,|hi|) + eta (sanity on the mean of both ends)");
+    g_init(&g[5], "cbx_box_to_cbox, random cases", "u*max(|lo|,|hi|) + eta (sanity on the mean of both ends)");
+    g_init(&g[6], "cbx_cbox_to_box, hard cases", "u*(|c| + h) + eta");
+    g_init(&g[7], "cbx_cbox_to_box, random cases", "u*(|c| + h) + eta");
 
     printf("test_cbox: N = %ld random cases per function, seed 0x%llx, conversion "
            "domain 2^%d, sanity bound %g units, corners every %d-th random case\n\n",
            n, (unsigned long long)seed, CONV_EMAX, SANITY, CORNER_EVERY);
-    run_tc(&k, &g[0], &g[1], n, seed);
-    run_b2c(&k, &g[2], &g[3], n, seed);
-    run_c2b(&k, &g[4], &g[5], n, seed);
+    run_tc(&k, &g[0], &g[1], &g[2], &g[3], n, seed);
+    run_b2c(&k, &g[4], &g[5], n, seed);
+    run_c2b(&k, &g[6], &g[7], n, seed);
 
     printf("\n");
-    for (i = 0; i < 6; i++) {
+    for (i = 0; i < 8; i++) {
         g_print(&g[i]);
         passed += g[i].cases - g[i].failed;
         failed += g[i].failed;
     }
     printf("spec-tight = cbox_tight of specs/cbx_spec.h: each end within "
            "12 u S + 2^-1065 of the exact end\n");
+    printf("D-* = the same checks on a D axis, on the dropped row (c_j = h_j = 0 where "
+           "m_j == 0): S' instead of S\n");
     printf("CPU time %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
     ctx_clear(&k);
     printf("%ld passed, %ld failed\n", passed, failed);

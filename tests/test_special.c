@@ -14,6 +14,11 @@
  *                    the radii are 0: the image is a point);
  *             empty  axis 1 empty: lo[1] > hi[1], h[1] = -1 (the four
  *                    box functions only);
+ *             half   ord with lo[0] = -inf and hi[2] = +inf: two half-lines
+ *                    (transform_box and box_to_cbox only);
+ *             zcol   ord with column 1 of the map zero (+0, -0, +0 in rows
+ *                    0, 1, 2) against c[1] = h[1] = +inf: every row drops
+ *                    that column (transform_cbox only);
  *   pos     the one input position overwritten: m[i][j] (j = 3 is the
  *           translation), lo[j], hi[j], c[j], h[j], center[i], radii[j],
  *           rot[i][j] (every input of the function);
@@ -23,11 +28,35 @@
  *           domain limit 2^254, 2^509, 2^1018, 2^1019 (just inside) and
  *           the next double above it in magnitude (just outside);
  *   expect  the status certbox.h's rules give (oracle(), written from the
- *           header and specs/cbx_spec.h, independently of the library; for
- *           transform_box and transform_cbox it is also cross-checked
- *           against exact_util's oracle, check "oracle");
- *   whole   bit i set: output axis i is outside the domain and must be the
- *           whole line (ERANGE rows only).
+ *           header and specs/cbx_spec.h, independently of the library and
+ *           of exact_util; for transform_box and transform_cbox it is also
+ *           cross-checked against exact_util's oracle, status and ends,
+ *           check "oracle");
+ *   ends    per output axis, the kind of its lower and its upper end (OK and
+ *           ERANGE rows; enum E_A.. below, printed "AFULW"):
+ *             A  in the domain: the kernel's finite end (transform_box: a
+ *                full row, every input of the row finite and in the domain);
+ *             F  transform_box, a finite map row that is not full (an
+ *                infinite box end, or a box end outside the domain): the
+ *                end from its vertex v_j = lo_j (m_j > 0), hi_j (m_j < 0),
+ *                0 (m_j == 0, also -0; 0 * inf = 0), mirrored for the upper
+ *                end, with the vertex in the domain: finite;
+ *             U  transform_box, that vertex needs an infinite box end: the
+ *                image is unbounded there; exactly -inf / +inf, no loss;
+ *             L  transform_box, the vertex is outside the domain: exactly
+ *                -inf / +inf, a loss;
+ *             D  transform_cbox, a row that is not full but is once its
+ *                zero-coefficient columns are dropped (c_j = h_j = 0 where
+ *                m_j == 0, also -0; 0 * x = 0 whatever c_j, h_j, +-inf
+ *                included; the map row finite and in the domain with those
+ *                values): the kernel on the dropped row, finite (both ends
+ *                of the axis);
+ *             W  the whole axis is the whole line, a loss (transform_box:
+ *                an infinite map entry; transform_cbox: not full even after
+ *                dropping; the others: outside the domain).
+ *           ERANGE iff some end is L or W.  A box axis with no real point
+ *           (hi < lo, lo = +inf or hi = -inf) is EMPTY (transform_box,
+ *           box_to_cbox).
  *
  * For every row, checks (a failure of any one fails the row):
  *   status     the status equals expect;
@@ -37,24 +66,37 @@
  *   special    EINVAL: the whole space ([-inf,+inf]^3, or c = 0, h = +inf),
  *              EMPTY: the empty box (lo = +inf, hi = -inf, or c = 0,
  *              h = -inf), exactly, on every axis;
- *   whole      ERANGE: the axes outside the domain exactly the whole line;
- *   finite     in-domain axes finite (and lo <= hi, h >= 0);
- *   contain    in-domain axes contain the exact image, decided exactly
+ *   whole      W axes exactly the whole line ([-inf, +inf], or c = 0,
+ *              h = +inf);
+ *   inf-end    U and L ends exactly -inf (lower) / +inf (upper);
+ *   v-finite   F ends finite;
+ *   v-contain  F ends on the right side of the exact vertex value
+ *              V = t + sum_j m_j v_j (the exact inf / sup of the image over
+ *              the real points of the box; mpq);
+ *   v-tight    F ends within 12 u S_v + 2^-1065 of V, S_v = |t| +
+ *              sum_j |m_j v_j| (exact, mpq);
+ *   finite     A and D axes finite (and lo <= hi, h >= 0);
+ *   contain    A and D axes contain the exact image (D: of the dropped
+ *              box, where a dropped column adds exactly 0), decided exactly
  *              with GMP: boxes by the 8 corners (mpq_t), the conversions by
  *              the exact ends c -+ h / lo, hi, spheres and ellipsoids by
  *              lo <= t - sqrt(s) <=> t - lo >= 0 and (t - lo)^2 >= s
  *              (xu_sqrt_lo_ok / xu_sqrt_hi_ok; s exact);
  *   tight      transform_box: the proven bound of certbox.h (each end within
  *              12 u S + 2^-1065 of the exact end); transform_cbox: the same
- *              bound of specs/cbx_spec.h (cbox_tight); the others (no bound
+ *              bound of specs/cbx_spec.h (cbox_tight; D axes: on the dropped
+ *              row, 12 u S' + 2^-1065 with S' = |t| + sum_j |m_j c_j'| +
+ *              |m_j h_j'|); the others (no bound
  *              is documented): a loose sanity bound, each end within
  *              2^-40 * (magnitude) + 2^-1060 (conversions) or + 2^-500
  *              (sphere, ellipsoid) of the exact end, only to catch a
  *              grossly wide box that would pass "contain";
  *   inputs     the inputs are unchanged.
  * Printed: one line per (function, position) with the expected statuses
- * and failures, per function the rows checked and failed, per check the
- * items checked and failed; -v prints every row.  The first failures are
+ * and failures, per function the rows checked and failed (and, for
+ * transform_box and transform_cbox, the ends of each kind per base
+ * input), per check the items checked and
+ * failed; -v prints every row with its ends.  The first failures are
  * printed with their inputs and outputs in hex (a reproducer).
  * Last line: "N passed, M failed" (rows); exit status 1 on failure.
  */
@@ -82,12 +124,13 @@ static const char *const fn_name[NFN] = {
 };
 /* positions per function (see slot()) and base inputs per function */
 static const int fn_npos[NFN] = { 18, 18, 6, 6, 12, 15 };
-static const int fn_nbase[NFN] = { 3, 3, 3, 3, 2, 2 };
+/* bit b set: base input b is used with the function */
+static const unsigned fn_bases[NFN] = { 0x0f, 0x17, 0x0f, 0x07, 0x03, 0x03 };
 /* output form: 1 = cbx_cbox, 0 = cbx_box */
 static const int fn_cout[NFN] = { 0, 1, 1, 0, 0, 0 };
 
-enum { B_ORD, B_POINT, B_EMPTY, NBASE };
-static const char *const base_name[NBASE] = { "ord", "point", "empty" };
+enum { B_ORD, B_POINT, B_EMPTY, B_HALF, B_ZCOL, NBASE };
+static const char *const base_name[NBASE] = { "ord", "point", "empty", "half", "zcol" };
 
 typedef struct sval { const char *name; double v; } sval;
 static const sval vals[] = {
@@ -124,11 +167,35 @@ static const sval vals[] = {
 };
 #define NVAL ((int)(sizeof vals / sizeof vals[0]))
 
+/* What one output end must be (column "ends"; printed as a letter):
+ *   A  in the domain: the kernel's finite end (transform_box: a full row,
+ *      every input of the row finite and in the domain; the 8-corner
+ *      containment and the proven 12 u S + 2^-1065);
+ *   F  transform_box, a finite map row that is not full: finite, from the
+ *      vertex (v_j = lo_j if m_j > 0, hi_j if m_j < 0, 0 if m_j == 0;
+ *      mirrored for the upper end) in the domain: on the right side of
+ *      t + sum m_j v_j and within 12 u S_v + 2^-1065, S_v = |t| + sum
+ *      |m_j v_j| (exact, mpq);
+ *   U  transform_box: the image is unbounded on that side (the vertex
+ *      needs an infinite box end): exactly -inf / +inf, not a loss;
+ *   L  transform_box: the vertex is outside the domain: exactly -inf /
+ *      +inf, a loss (CBX_ERANGE);
+ *   W  the whole line (both ends of the axis), a loss: an infinite map
+ *      entry (transform_box), not full even with its zero-coefficient
+ *      columns dropped (transform_cbox), or outside the domain (the other
+ *      functions);
+ *   D  transform_cbox, both ends of an axis whose row is full only once
+ *      its zero-coefficient columns are dropped (c_j = h_j = 0 where
+ *      m_j == 0): the kernel on the dropped row, finite, checked like A on
+ *      the dropped box. */
+enum { E_A, E_F, E_U, E_L, E_W, E_D, NEND };
+static const char end_char[NEND + 1] = "AFULWD";
+
 /* One table row (see the header comment). */
 typedef struct row {
     int fn, base, pos, val;
     cbx_status expect;
-    int whole;
+    unsigned char end[3][2]; /* [axis][0 lower, 1 upper] (not EINVAL/EMPTY) */
 } row;
 
 /* Every input any function reads. */
@@ -191,6 +258,15 @@ static void base_input(int fn, int base, input *in)
     } else if (base == B_EMPTY) {
         in->b.lo[1] = 3.5;   /* > hi[1] = 3 */
         in->cb.h[1] = -1.0;
+    } else if (base == B_HALF) {
+        in->b.lo[0] = -INF;  /* x0 <= 2 */
+        in->b.hi[2] = INF;   /* x2 >= -4 */
+    } else if (base == B_ZCOL) {
+        in->a.m[0][1] = 0.0; /* column 1 zero, both signs */
+        in->a.m[1][1] = -0.0;
+        in->a.m[2][1] = 0.0;
+        in->cb.c[1] = INF;   /* unusable unless dropped */
+        in->cb.h[1] = INF;
     }
 }
 
@@ -284,33 +360,111 @@ static int affine_nan(const cbx_affine *a)
 
 static int nan3(const double v[3]) { return nan_(v[0]) || nan_(v[1]) || nan_(v[2]); }
 
-/* Expected status; *whole = the axes outside the domain. */
-static cbx_status oracle(int fn, const input *in, int *whole)
+static int is_pinf(double d) { return isinf(d) && d > 0; }
+static int is_ninf(double d) { return isinf(d) && d < 0; }
+
+/* [lo, hi] has no real point: hi < lo, lo = +inf or hi = -inf. */
+static int no_point(double lo, double hi)
 {
-    int i, j, m = 0;
-    *whole = 0;
+    return hi < lo || is_pinf(lo) || is_ninf(hi);
+}
+
+/* transform_box, one end of a finite map row that is not full: U when
+ * the coordinate it needs is infinite, else F when the vertex is in the
+ * domain, else L.  v[] receives the vertex (when not U). */
+static int tbox_end(const input *in, int i, int upper, double v[3])
+{
+    int j, kind = E_F;
+    for (j = 0; j < 3; j++) {
+        double m = in->a.m[i][j];
+        /* the lower end needs hi_j when m < 0, the upper end when m > 0 */
+        int needs_hi = upper ? m > 0 : m < 0;
+        double c = needs_hi ? in->b.hi[j] : in->b.lo[j];
+        if (m == 0) {
+            v[j] = 0.0;             /* 0 * x = 0 for every real x */
+            continue;
+        }
+        if (isinf(c)) return E_U;   /* a half-line: m x has no bound there */
+        v[j] = c;
+    }
+    for (j = 0; j < 3; j++)
+        if (!pair_dom(in->a.m[i][j], v[j])) kind = E_L;
+    if (!mag_le(in->a.m[i][3], 1018)) kind = E_L;
+    return kind;
+}
+
+static int row_map_finite(const cbx_affine *a, int i)
+{
+    return isfinite(a->m[i][0]) && isfinite(a->m[i][1]) && isfinite(a->m[i][2])
+           && isfinite(a->m[i][3]);
+}
+
+/* transform_cbox, row i with its zero-coefficient columns dropped: c_j and
+ * h_j replaced by 0 where m_ij == 0 (+0 or -0; 0 * x = 0 for every real x,
+ * so the image does not depend on x_j), copied elsewhere. */
+static void tcbox_drop(const input *in, int i, double dc[3], double dh[3])
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        int z = in->a.m[i][j] == 0;
+        dc[j] = z ? 0.0 : in->cb.c[j];
+        dh[j] = z ? 0.0 : in->cb.h[j];
+    }
+}
+
+static void set_axis(unsigned char end[3][2], int i, int lo, int hi)
+{
+    end[i][0] = (unsigned char)lo;
+    end[i][1] = (unsigned char)hi;
+}
+
+/* Expected status; end[][] = the kind of every output end (A F U L W). */
+static cbx_status oracle(int fn, const input *in, unsigned char end[3][2])
+{
+    int i, j, loss = 0;
+    double v[3];
+    for (i = 0; i < 3; i++) set_axis(end, i, E_A, E_A);
     switch (fn) {
     case FN_TBOX:
         if (affine_nan(&in->a) || nan3(in->b.lo) || nan3(in->b.hi)) return CBX_EINVAL;
         for (j = 0; j < 3; j++)
-            if (in->b.hi[j] < in->b.lo[j]) return CBX_EMPTY;
-        for (i = 0; i < 3; i++)
-            if (!affine_row_dom(&in->a, in->b.lo, in->b.hi, i)) m |= 1 << i;
-        break;
+            if (no_point(in->b.lo[j], in->b.hi[j])) return CBX_EMPTY;
+        for (i = 0; i < 3; i++) {
+            int k;
+            if (affine_row_dom(&in->a, in->b.lo, in->b.hi, i)) continue; /* A */
+            if (!row_map_finite(&in->a, i)) {
+                set_axis(end, i, E_W, E_W);
+                loss = 1;
+                continue;
+            }
+            for (k = 0; k < 2; k++) {
+                end[i][k] = (unsigned char)tbox_end(in, i, k, v);
+                if (end[i][k] == E_L) loss = 1;
+            }
+        }
+        return loss ? CBX_ERANGE : CBX_OK;
     case FN_TCBOX:
         if (affine_nan(&in->a) || nan3(in->cb.c) || nan3(in->cb.h)) return CBX_EINVAL;
         for (j = 0; j < 3; j++)
             if (in->cb.h[j] < 0) return CBX_EMPTY;
-        for (i = 0; i < 3; i++)
-            if (!affine_row_dom(&in->a, in->cb.c, in->cb.h, i)) m |= 1 << i;
+        for (i = 0; i < 3; i++) {
+            double dc[3], dh[3];
+            if (affine_row_dom(&in->a, in->cb.c, in->cb.h, i)) continue; /* A */
+            tcbox_drop(in, i, dc, dh);
+            if (row_map_finite(&in->a, i) && affine_row_dom(&in->a, dc, dh, i))
+                set_axis(end, i, E_D, E_D);
+            else
+                set_axis(end, i, E_W, E_W);
+        }
         break;
     case FN_B2C:
         if (nan3(in->b.lo) || nan3(in->b.hi)) return CBX_EINVAL;
         for (j = 0; j < 3; j++)
-            if (in->b.hi[j] < in->b.lo[j]) return CBX_EMPTY;
+            if (no_point(in->b.lo[j], in->b.hi[j])) return CBX_EMPTY;
         for (j = 0; j < 3; j++)
             if (!(isfinite(in->b.lo[j]) && isfinite(in->b.hi[j])
-                  && mag_le(in->b.lo[j], 1019) && mag_le(in->b.hi[j], 1019))) m |= 1 << j;
+                  && mag_le(in->b.lo[j], 1019) && mag_le(in->b.hi[j], 1019)))
+                set_axis(end, j, E_W, E_W);
         break;
     case FN_C2B:
         if (nan3(in->cb.c) || nan3(in->cb.h)) return CBX_EINVAL;
@@ -318,7 +472,8 @@ static cbx_status oracle(int fn, const input *in, int *whole)
             if (in->cb.h[j] < 0) return CBX_EMPTY;
         for (j = 0; j < 3; j++)
             if (!(isfinite(in->cb.c[j]) && isfinite(in->cb.h[j])
-                  && mag_le(in->cb.c[j], 1019) && mag_le(in->cb.h[j], 1019))) m |= 1 << j;
+                  && mag_le(in->cb.c[j], 1019) && mag_le(in->cb.h[j], 1019)))
+                set_axis(end, j, E_W, E_W);
         break;
     case FN_SPH:
         if (affine_nan(&in->a)) return CBX_EINVAL;
@@ -326,7 +481,7 @@ static cbx_status oracle(int fn, const input *in, int *whole)
             int ok = isfinite(in->a.m[i][3]) && mag_le(in->a.m[i][3], 1018);
             for (j = 0; j < 3; j++)
                 ok = ok && isfinite(in->a.m[i][j]) && mag_le(in->a.m[i][j], 509);
-            if (!ok) m |= 1 << i;
+            if (!ok) set_axis(end, i, E_W, E_W);
         }
         break;
     default:
@@ -338,30 +493,47 @@ static cbx_status oracle(int fn, const input *in, int *whole)
             for (j = 0; j < 3; j++)
                 ok = ok && isfinite(in->rot[i][j]) && mag_le(in->rot[i][j], 254)
                      && isfinite(in->radii[j]) && mag_le(in->radii[j], 254);
-            if (!ok) m |= 1 << i;
+            if (!ok) set_axis(end, i, E_W, E_W);
         }
     }
-    *whole = m;
-    return m ? CBX_ERANGE : CBX_OK;
+    for (i = 0; i < 3; i++)
+        if (end[i][0] == E_W) loss = 1;
+    return loss ? CBX_ERANGE : CBX_OK;
 }
 
-/* exact_util's oracle, where it has one (-1: none). */
-static int xu_oracle(int fn, const input *in, cbx_status *st, int *whole)
+/* The end kinds as "ab cd ef" (s: at least 9 chars). */
+static void ends_str(const unsigned char end[3][2], char *s)
+{
+    int i, n = 0;
+    for (i = 0; i < 3; i++) {
+        if (i) s[n++] = ' ';
+        s[n++] = end_char[end[i][0]];
+        s[n++] = end_char[end[i][1]];
+    }
+    s[n] = '\0';
+}
+
+/* exact_util's oracle, where it has one (-1: none): the status and the
+ * end kinds as a string like ends_str()'s ("" for EINVAL / EMPTY). */
+static int xu_oracle(int fn, const input *in, cbx_status *st, char ends[9])
 {
     int i;
+    ends[0] = '\0';
     if (fn == FN_TBOX) {
         *st = xu_expected_status(&in->a, &in->b);
-        *whole = *st == CBX_ERANGE ? xu_oob_mask(&in->a, &in->b) : 0;
+        if (*st == CBX_OK || *st == CBX_ERANGE) xu_ends_str(&in->a, &in->b, ends);
         return 0;
     }
     if (fn == FN_TCBOX) {
-        *whole = 0;
-        if (xu_cbox_has_nan(&in->a, &in->cb)) *st = CBX_EINVAL;
-        else if (xu_cbox_is_empty(&in->cb)) *st = CBX_EMPTY;
-        else {
-            for (i = 0; i < 3; i++)
-                if (!xu_cbox_row_in_domain(&in->a, &in->cb, i)) *whole |= 1 << i;
-            *st = *whole ? CBX_ERANGE : CBX_OK;
+        *st = xu_cbox_expected_status(&in->a, &in->cb);
+        if (*st == CBX_OK || *st == CBX_ERANGE) {
+            unsigned char e[3][2];
+            for (i = 0; i < 3; i++) {
+                int kd = xu_cbox_axis_kind(&in->a, &in->cb, i);
+                int ek = kd == XU_CAX_FULL ? E_A : kd == XU_CAX_DROP ? E_D : E_W;
+                set_axis(e, i, ek, ek);
+            }
+            ends_str((const unsigned char (*)[2])e, ends);
         }
         return 0;
     }
@@ -373,13 +545,14 @@ static int xu_oracle(int fn, const input *in, cbx_status *st, int *whole)
 /* ---------------------------------------------------------------------- */
 
 enum { C_ORACLE, C_STATUS, C_UNSET, C_NANOUT, C_SPECIAL, C_WHOLE, C_FINITE,
-       C_CONTAIN, C_TIGHT, C_INPUT, NCHECK };
+       C_CONTAIN, C_TIGHT, C_INFEND, C_VFINITE, C_VCONTAIN, C_VTIGHT, C_INPUT, NCHECK };
 static const char *const check_name[NCHECK] = {
     "oracle", "status", "out-set", "nan-out", "special", "whole", "finite",
-    "contain", "tight", "inputs"
+    "contain", "tight", "inf-end", "v-finite", "v-contain", "v-tight", "inputs"
 };
 static const char *const check_unit[NCHECK] = {
-    "rows", "rows", "rows", "rows", "rows", "axes", "axes", "axes", "axes", "rows"
+    "rows", "rows", "rows", "rows", "rows", "axes", "axes", "axes", "axes",
+    "ends", "ends", "ends", "ends", "rows"
 };
 
 typedef struct ctx {
@@ -458,16 +631,61 @@ static void axis_tbox(ctx *k, const input *in, const cbx_box *o, int i)
         fail(k, C_TIGHT, "axis %d: an end beyond the proven 12 u S + 2^-1065", i);
 }
 
-/* transform_cbox, in-domain axis i: the 8 corners c_j -+ h_j, and
- * cbox_tight of specs/cbx_spec.h. */
-static void axis_tcbox(ctx *k, const input *in, const cbx_cbox *o, int i)
+/* transform_box, one end of kind F (upper = 0: the lower end): with
+ * V = t + sum_j m_j v_j and S_v = |t| + sum_j |m_j v_j| over the vertex v
+ * (exact, mpq): lo <= V and lo >= V - (12 u S_v + 2^-1065), mirrored for
+ * the upper end.  V is the exact inf (sup) of the image over the real
+ * points of the box (infinite box ends read as half-lines). */
+static void end_tbox(ctx *k, const input *in, const cbx_box *o, int i, int upper)
+{
+    double e = upper ? o->hi[i] : o->lo[i], v[3];
+    int j;
+    apply(k, C_VFINITE);
+    if (!isfinite(e)) {
+        fail(k, C_VFINITE, "axis %d: an end whose vertex is in the domain is not finite", i);
+        return;
+    }
+    tbox_end(in, i, upper, v);
+    mpq_set_d(k->q, in->a.m[i][3]);          /* V   */
+    mpq_abs(k->qc, k->q);                    /* S_v */
+    for (j = 0; j < 3; j++) {
+        mpq_set_d(k->qa, in->a.m[i][j]);
+        mpq_set_d(k->qb, v[j]);
+        mpq_mul(k->qa, k->qa, k->qb);
+        mpq_add(k->q, k->q, k->qa);
+        q_abs_add(k->qc, k->qa);
+    }
+    mpq_set_d(k->qlo, e);
+    apply(k, C_VCONTAIN);
+    if (upper ? mpq_cmp(k->qlo, k->q) < 0 : mpq_cmp(k->qlo, k->q) > 0)
+        fail(k, C_VCONTAIN, "axis %d: a finite end is inside the exact inf / sup of the image", i);
+    /* tol = 3 * 2^-51 S_v + 2^-1065 = 12 u S_v + 2^-1065 */
+    q_pow2m(k->tol, 51);
+    mpq_mul(k->tol, k->tol, k->qc);
+    mpq_set_ui(k->eta, 3, 1);
+    mpq_mul(k->tol, k->tol, k->eta);
+    q_pow2m(k->eta, 1065);
+    mpq_add(k->tol, k->tol, k->eta);
+    if (upper) mpq_add(k->qa, k->q, k->tol);
+    else mpq_sub(k->qa, k->q, k->tol);
+    apply(k, C_VTIGHT);
+    if (upper ? mpq_cmp(k->qlo, k->qa) > 0 : mpq_cmp(k->qlo, k->qa) < 0)
+        fail(k, C_VTIGHT, "axis %d: an end beyond 12 u S_v + 2^-1065 of its vertex value", i);
+}
+
+/* transform_cbox, axis i of kind A (c, h: the input box) or D (c, h: the
+ * dropped box of row i, tcbox_drop): the 8 corners c_j -+ h_j, and
+ * cbox_tight of specs/cbx_spec.h on that box (for D: S' of the dropped
+ * row). */
+static void axis_tcbox(ctx *k, const input *in, const double c[3], const double h[3],
+                       const cbx_cbox *o, int i)
 {
     double oc = o->c[i], oh = o->h[i];
     unsigned cb;
     int j, bad = 0;
     apply(k, C_FINITE);
     if (!isfinite(oc) || !isfinite(oh) || oh < 0) {
-        fail(k, C_FINITE, "axis %d in the domain but c, h not finite with h >= 0", i);
+        fail(k, C_FINITE, "axis %d (A or D) but c, h not finite with h >= 0", i);
         return;
     }
     mpq_set_d(k->qa, oc);
@@ -478,8 +696,8 @@ static void axis_tcbox(ctx *k, const input *in, const cbx_cbox *o, int i)
     for (cb = 0; cb < 8; cb++) {
         mpq_set_d(k->q, in->a.m[i][3]);
         for (j = 0; j < 3; j++) {
-            mpq_set_d(k->qa, in->cb.c[j]);
-            mpq_set_d(k->qb, in->cb.h[j]);
+            mpq_set_d(k->qa, c[j]);
+            mpq_set_d(k->qb, h[j]);
             if ((cb >> j) & 1u) mpq_add(k->qa, k->qa, k->qb);
             else mpq_sub(k->qa, k->qa, k->qb);
             mpq_set_d(k->qb, in->a.m[i][j]);
@@ -496,11 +714,11 @@ static void axis_tcbox(ctx *k, const input *in, const cbx_cbox *o, int i)
     mpq_set_ui(k->tol, 0, 1);                /* Hh  */
     for (j = 0; j < 3; j++) {
         mpq_set_d(k->qa, in->a.m[i][j]);
-        mpq_set_d(k->qb, in->cb.c[j]);
+        mpq_set_d(k->qb, c[j]);
         mpq_mul(k->qb, k->qb, k->qa);
         mpq_add(k->q, k->q, k->qb);
         q_abs_add(k->qc, k->qb);
-        mpq_set_d(k->qb, in->cb.h[j]);
+        mpq_set_d(k->qb, h[j]);
         mpq_mul(k->qb, k->qb, k->qa);
         q_abs_add(k->tol, k->qb);
     }
@@ -674,8 +892,6 @@ static cbx_status call(int fn, const input *in, output *o)
     }
 }
 
-static int is_pinf(double d) { return isinf(d) && d > 0; }
-static int is_ninf(double d) { return isinf(d) && d < 0; }
 
 /* Output axis i is the whole line (kind 1) or empty (kind 0), exactly. */
 static int special_axis(int cform, const output *o, int i, int whole)
@@ -704,7 +920,7 @@ static int run_row(ctx *k, const row *r, verdict *v)
     input in0;
     int n, i, cform = fn_cout[r->fn];
     cbx_status xst;
-    int xwhole;
+    char xends[9], ends[9];
 
     memset(k->flag, 0, sizeof k->flag);
     k->row_failed = 0;
@@ -718,9 +934,11 @@ static int run_row(ctx *k, const row *r, verdict *v)
     apply(k, C_INPUT);
     if (memcmp(&in0, &v->in, sizeof in0) != 0) fail(k, C_INPUT, "the call modified its inputs", 0);
 
-    if (xu_oracle(r->fn, &v->in, &xst, &xwhole) == 0) {
+    if (xu_oracle(r->fn, &v->in, &xst, xends) == 0) {
         apply(k, C_ORACLE);
-        if (xst != r->expect || (r->expect == CBX_ERANGE && xwhole != r->whole))
+        ends_str((const unsigned char (*)[2])r->end, ends);
+        if (xst != r->expect
+            || ((r->expect == CBX_OK || r->expect == CBX_ERANGE) && strcmp(xends, ends) != 0))
             fail(k, C_ORACLE, "the table's oracle and exact_util's disagree", 0);
     }
     apply(k, C_STATUS);
@@ -745,15 +963,37 @@ static int run_row(ctx *k, const row *r, verdict *v)
         return k->row_failed;
     }
     for (i = 0; i < 3; i++) {
-        if (r->whole & (1 << i)) {
+        int e;
+        if (r->end[i][0] == E_W) {
             apply(k, C_WHOLE);
             if (!special_axis(cform, &v->out, i, 1))
-                fail(k, C_WHOLE, "axis %d outside the domain but not the whole line", i);
+                fail(k, C_WHOLE, "axis %d (W) is not exactly the whole line", i);
+            continue;
+        }
+        if (r->end[i][0] == E_D) { /* transform_cbox: the dropped row */
+            double dc[3], dh[3];
+            tcbox_drop(&v->in, i, dc, dh);
+            axis_tcbox(k, &v->in, dc, dh, &v->out.cb, i);
+            continue;
+        }
+        if (r->end[i][0] != E_A) { /* transform_box, each end on its own */
+            for (e = 0; e < 2; e++) {
+                double d = e ? v->out.b.hi[i] : v->out.b.lo[i];
+                if (r->end[i][e] == E_F) {
+                    end_tbox(k, &v->in, &v->out.b, i, e);
+                    continue;
+                }
+                apply(k, C_INFEND);
+                if (!(e ? is_pinf(d) : is_ninf(d)))
+                    fail(k, C_INFEND, e ? "axis %d: the upper end must be +inf (unbounded or lost)"
+                                        : "axis %d: the lower end must be -inf (unbounded or lost)",
+                         i);
+            }
             continue;
         }
         switch (r->fn) {
         case FN_TBOX: axis_tbox(k, &v->in, &v->out.b, i); break;
-        case FN_TCBOX: axis_tcbox(k, &v->in, &v->out.cb, i); break;
+        case FN_TCBOX: axis_tcbox(k, &v->in, v->in.cb.c, v->in.cb.h, &v->out.cb, i); break;
         case FN_B2C: axis_b2c(k, &v->in, &v->out.cb, i); break;
         case FN_C2B: axis_c2b(k, &v->in, &v->out.b, i); break;
         default: axis_ball(k, r->fn, &v->in, &v->out.b, i); break;
@@ -771,7 +1011,8 @@ static long make_table(row *t)
     long n = 0;
     int fn, b, p, v;
     for (fn = 0; fn < NFN; fn++)
-        for (b = 0; b < fn_nbase[fn]; b++)
+        for (b = 0; b < NBASE; b++)
+            if (fn_bases[fn] & (1u << b))
             for (p = 0; p < fn_npos[fn]; p++)
                 for (v = 0; v < NVAL; v++) {
                     if (t) {
@@ -782,7 +1023,7 @@ static long make_table(row *t)
                         r->pos = p;
                         r->val = v;
                         make_input(r, &in);
-                        r->expect = oracle(fn, &in, &r->whole);
+                        r->expect = oracle(fn, &in, r->end);
                     }
                     n++;
                 }
@@ -842,6 +1083,7 @@ int main(int argc, char **argv)
     int verbose = argc > 1 && strcmp(argv[1], "-v") == 0;
     long n, k, failed = 0, logs = 0;
     long fn_rows[NFN] = { 0 }, fn_fail[NFN] = { 0 }, fn_st[NFN][4];
+    long tbox_ends[NBASE][NEND], tcbox_axes[NBASE][NEND];
     long pos_rows[NFN][18], pos_fail[NFN][18], pos_st[NFN][18][4];
     row *t;
     ctx c;
@@ -852,6 +1094,8 @@ int main(int argc, char **argv)
         return 2;
     }
     memset(fn_st, 0, sizeof fn_st);
+    memset(tbox_ends, 0, sizeof tbox_ends);
+    memset(tcbox_axes, 0, sizeof tcbox_axes);
     memset(pos_rows, 0, sizeof pos_rows);
     memset(pos_fail, 0, sizeof pos_fail);
     memset(pos_st, 0, sizeof pos_st);
@@ -874,6 +1118,15 @@ int main(int argc, char **argv)
         int si = xu_status_index(r->expect);
         fn_rows[r->fn]++;
         pos_rows[r->fn][r->pos]++;
+        if (r->fn == FN_TBOX && (r->expect == CBX_OK || r->expect == CBX_ERANGE)) {
+            int i, e;
+            for (i = 0; i < 3; i++)
+                for (e = 0; e < 2; e++) tbox_ends[r->base][r->end[i][e]]++;
+        }
+        if (r->fn == FN_TCBOX && (r->expect == CBX_OK || r->expect == CBX_ERANGE)) {
+            int i;
+            for (i = 0; i < 3; i++) tcbox_axes[r->base][r->end[i][0]]++;
+        }
         if (si >= 0) {
             fn_st[r->fn][si]++;
             pos_st[r->fn][r->pos][si]++;
@@ -884,10 +1137,13 @@ int main(int argc, char **argv)
             pos_fail[r->fn][r->pos]++;
         }
         if (verbose || (bad && logs < MAX_FAIL_LOGS)) {
+            char ends[9] = "-";
+            if (r->expect == CBX_OK || r->expect == CBX_ERANGE)
+                ends_str((const unsigned char (*)[2])r->end, ends);
             printf("  ");
             print_row_id(stdout, r);
-            printf(" expect %-10s got %-10s whole %d %s\n", cbx_status_name(r->expect),
-                   cbx_status_name(v.got), r->whole, bad ? "FAIL" : "ok");
+            printf(" expect %-10s got %-10s ends %-8s %s\n", cbx_status_name(r->expect),
+                   cbx_status_name(v.got), ends, bad ? "FAIL" : "ok");
         }
         if (bad && logs < MAX_FAIL_LOGS) {
             logs++;
@@ -918,6 +1174,21 @@ int main(int argc, char **argv)
                fn_fail[fn]);
         for (s = 0; s < 4; s++) printf(" %s %ld", cbx_status_name(st_of[s]), fn_st[fn][s]);
         printf(")\n");
+    }
+    printf("\ntransform_box ends by kind (OK and ERANGE rows; A full row, F vertex, "
+           "U unbounded, L lost, W whole line):\n");
+    for (p = 0; p < NBASE; p++) {
+        if (!(fn_bases[FN_TBOX] & (1u << p))) continue;
+        printf("  base %-5s", base_name[p]);
+        for (s = 0; s < E_D; s++) printf("  %c %5ld", end_char[s], tbox_ends[p][s]);
+        printf("\n");
+    }
+    printf("transform_cbox axes by kind (OK and ERANGE rows; A full row, D zero columns "
+           "dropped, W lost):\n");
+    for (p = 0; p < NBASE; p++) {
+        if (!(fn_bases[FN_TCBOX] & (1u << p))) continue;
+        printf("  base %-5s  A %5ld  D %5ld  W %5ld\n", base_name[p], tcbox_axes[p][E_A],
+               tcbox_axes[p][E_D], tcbox_axes[p][E_W]);
     }
     ctx_clear(&c);
     free(t);

@@ -23,11 +23,12 @@
  *    2^1074 (FZ_SH1) and products of two values times 2^2148 (FZ_SH2 =
  *    XU_SHIFT) are integers: all comparisons are exact.
  *
- *    Inputs with infinite entries.  The library's handling of infinities is
- *    being changed, so for those inputs no status and no particular output
- *    is asserted, only: every field written, nothing NaN, and containment
- *    on every finite output end, decided exactly with this reading of the
- *    input:
+ *    Inputs with infinite entries.  fuzz_transform_box and
+ *    fuzz_box_to_cbox assert the status and every end for them too (the
+ *    half-space rules, see exact_util.h and those harnesses); for every
+ *    harness, and independently of those rules: every field written,
+ *    nothing NaN, and containment on every finite output end, decided
+ *    exactly with this reading of the input:
  *      - a box bound is a bound of a real set: lo = -inf / hi = +inf means
  *        unbounded on that side; lo = +inf or hi = -inf (or lo > hi) is an
  *        empty set, whose image is empty (nothing to contain);

@@ -15,13 +15,22 @@
  * Oracle (abort() on failure):
  *   always: status documented, every field written, no NaN in out, the
  *     inputs unchanged; NaN input -> CBX_EINVAL and [-inf, +inf]^3;
- *   finite inputs: status == xu_expected_status (exact_util); EMPTY ->
- *     lo = +inf, hi = -inf; out-of-domain axes [-inf, +inf]; in-domain
- *     axes finite, lo <= hi, the 8 corner images inside [lo, hi] (exact,
- *     mpz and, independently, mpq: xu_corner_failures), and within the
- *     proven tightness 12 u S + 2^-1065 (xu_lo/hi_within_proven);
- *   inputs with infinities: containment on every finite end only (exact,
- *     on the unbounded image; see fuzz_common.h).
+ *   every other input, infinities included: exact_util's checks
+ *     (xu_check_result, with the mpq corner checks): status ==
+ *     xu_expected_status; EMPTY (hi < lo, lo = +inf or hi = -inf) ->
+ *     lo = +inf, hi = -inf; full rows (rule A) finite, containing the exact
+ *     image (fixed point and mpq corners), within 12 u S + 2^-1065; other
+ *     rows with a finite map (rule B: half-spaces, boxes outside the
+ *     domain) end by end: exactly -inf / +inf where the image is unbounded
+ *     or the vertex is outside the domain, else finite, containing the
+ *     exact vertex value and within 12 u S_v + 2^-1065; rows with an
+ *     infinite map entry (rule C) [-inf, +inf];
+ *   and, independently of exact_util's vertex rule, fuzz_common.h's
+ *     extended-real requirements (fz_row_req: an end must be infinite where
+ *     the exact image is unbounded, else contain its exact inf / sup) on
+ *     every end; for finite map rows the kind (unbounded or not) and the
+ *     exact inf / sup must also agree with the vertex rule; on full rows
+ *     the 8 corners once more (fz_check_corners).
  */
 #include "fuzz_common.h"
 
@@ -41,63 +50,45 @@ static void dump(FILE *f)
     fz_print_box(f, "out", &OUT);
 }
 
-static int box_finite(void)
-{
-    int i;
-    for (i = 0; i < 3; i++)
-        if (!fz_all_finite(A.m[i], 4)) return 0;
-    return fz_all_finite(IN.lo, 3) && fz_all_finite(IN.hi, 3);
-}
-
 static int box_has_nan(void) { return xu_has_nan(&A, &IN); }
 
-static void check_finite_input(fz_ctx *k)
+static void check_result(fz_ctx *k)
 {
-    cbx_status want = xu_expected_status(&A, &IN);
-    fz_ival *iv = fz_ivals();
-    fz_ext *e = fz_oends();
-    int oob, i;
-
-    fz_check_status(ST, want);
-    if (want == CBX_EMPTY) {
-        fz_check_box_empty(&OUT);
-        return;
-    }
-    oob = xu_oob_mask(&A, &IN);
-    if (!fz_ivals_box(iv, IN.lo, IN.hi)) fz_fail("oracle: non-empty box read as empty");
-    for (i = 0; i < 3; i++) {
-        double lo = OUT.lo[i], hi = OUT.hi[i];
-        if (oob & (1 << i)) {
-            if (!fz_is_ninf(lo) || !fz_is_pinf(hi))
-                fz_fail("axis %d is outside the domain but not [-inf, +inf]", i);
-            continue;
-        }
-        if (!isfinite(lo) || !isfinite(hi) || lo > hi)
-            fz_fail("axis %d is in the domain but out = [%a, %a] (not finite, ordered)",
-                    i, lo, hi);
-        fz_oends_box(e, lo, hi);
-        fz_check_corners(k, i, A.m[i], iv, e);
-        if (xu_corner_failures(&k->x, &A, &IN, i, lo, hi))
-            fz_fail("axis %d: CONTAINMENT: mpq corner check failed", i);
-        xu_row_bounds(&k->x, &A, &IN, i);
-        if (xu_cmp_scaled_d(&k->x, k->x.L, lo) < 0 || xu_cmp_scaled_d(&k->x, k->x.H, hi) > 0)
-            fz_fail("axis %d: CONTAINMENT: fixed-point L/H not inside [lo, hi]", i);
-        if (!xu_lo_within_proven(&k->x, lo) || !xu_hi_within_proven(&k->x, hi))
-            fz_fail("axis %d: beyond the proven tightness 12 u S + 2^-1065", i);
-    }
-}
-
-static void check_infinite_input(fz_ctx *k)
-{
+    xu_verdict v;
     fz_ival *iv = fz_ivals();
     fz_req *r = fz_reqs();
     fz_ext *e = fz_oends();
-    int i;
-    if (!fz_ivals_box(iv, IN.lo, IN.hi)) return; /* empty real box */
+    int i, upper;
+
+    if (xu_check_result(&k->x, &A, &IN, &OUT, ST, 1, &v))
+        fz_fail("exact_util: %s", v.why);
+    if (v.expected == CBX_EMPTY) {
+        if (fz_ivals_box(iv, IN.lo, IN.hi)) fz_fail("oracles disagree: EMPTY box with a point");
+        return;
+    }
+    if (!fz_ivals_box(iv, IN.lo, IN.hi)) fz_fail("oracles disagree: non-empty box read as empty");
     for (i = 0; i < 3; i++) {
         fz_row_req(k, A.m[i], iv, &r[0], &r[1]);
         fz_oends_box(e, OUT.lo[i], OUT.hi[i]);
         fz_check_req(i, &r[0], &r[1], e);
+        if (!xu_map_row_finite(&A, i)) continue;
+        for (upper = 0; upper < 2; upper++) {
+            int kind = xu_end_kind(&A, &IN, i, upper);
+            int unb = r[upper].kind == FZ_REQ_INF;
+            if (r[upper].kind == FZ_REQ_NONE)
+                fz_fail("axis %d: finite map row but no requirement on an end", i);
+            if (unb != (kind == XU_END_UNB))
+                fz_fail("axis %d: fz_row_req says %s on the %s side, exact_util says %c", i,
+                        unb ? "unbounded" : "bounded", upper ? "upper" : "lower",
+                        xu_end_char[kind]);
+            if (kind == XU_END_VERTEX) {
+                xu_vertex_bounds(&k->x, &A, &IN, i, upper);
+                if (mpz_cmp(upper ? k->x.H : k->x.L, r[upper].v) != 0)
+                    fz_fail("axis %d: vertex value != fz_row_req's exact %s", i,
+                            upper ? "sup" : "inf");
+            }
+        }
+        if (xu_end_kind(&A, &IN, i, 0) == XU_END_FULL) fz_check_corners(k, i, A.m[i], iv, e);
     }
 }
 
@@ -152,10 +143,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (box_has_nan()) {
         fz_check_status(ST, CBX_EINVAL);
         fz_check_box_whole(&OUT);
-    } else if (box_finite()) {
-        check_finite_input(k);
     } else {
-        check_infinite_input(k);
+        check_result(k);
     }
     return 0;
 }

@@ -16,14 +16,20 @@
  *   always: status documented, every field written, no NaN in out, the
  *     inputs unchanged; NaN input -> CBX_EINVAL, c = 0, h = +inf on every
  *     axis;
- *   finite inputs: the status decided exactly from the contract (h < 0 ->
- *     EMPTY with c = 0, h = -inf; a row outside the domain, pairs
- *     (m_ij, c_j), (m_ij, h_j) and |m_i3| <= 2^1018: xu_cbox_row_in_domain,
- *     -> ERANGE, that axis c = 0, h = +inf); in-domain axes finite with
- *     h' >= 0, and the 8 exact corner images t_i + sum_j m_ij (c_j -+ h_j)
- *     inside [c' - h', c' + h'] (exact);
- *   inputs with infinities: containment on every finite end only (exact,
- *     on the unbounded image; see fuzz_common.h).
+ *   every other input, infinities included: the status equals
+ *     xu_cbox_expected_status (exact_util.h: h < 0 somewhere -> EMPTY with
+ *     c = 0, h = -inf; else per output axis A full row, D full once the
+ *     zero-coefficient columns are dropped, W lost; ERANGE iff some axis is
+ *     W); W axes exactly c = 0, h = +inf; A and D axes finite with h' >= 0,
+ *     the 8 exact corner images t_i + sum_j m_ij (c_j' -+ h_j') inside
+ *     [c' - h', c' + h'] (exact; c_j' = h_j' = 0 where m_ij == 0, also
+ *     -0.0, for D; the input itself for A), and each end within
+ *     12 u S' + 2^-1065 of the exact end, S' = |t| + sum_j |m_ij c_j'| +
+ *     |m_ij h_j'| (cbox_tight of specs/cbx_spec.h on the dropped row);
+ *   and, independently of exact_util's kinds, fuzz_common.h's extended-real
+ *     requirements (fz_row_req) on every axis whose input box has a real
+ *     point: an A or D axis must have a bounded exact image there, and
+ *     every finite end must contain it.
  */
 #include "fuzz_common.h"
 
@@ -43,54 +49,96 @@ static void dump(FILE *f)
     fz_print_cbox(f, "out", &OUT);
 }
 
-static int all_finite(void)
+/* cbox_tight on box d (all finite): with C = t + sum m_j c_j,
+ * H = sum |m_j h_j|, S' = |t| + sum |m_j c_j| + H (all scaled by 2^FZ_SH2,
+ * integers): (oc - oh) >= C - H - tol and (oc + oh) <= C + H + tol,
+ * tol = 12 u S' + 2^-1065, decided as 2^53 gap >= -(12 S' + 2^(FZ_SH2 -
+ * 1065 + 53)). */
+static void check_tight(fz_ctx *k, int i, const double m[4], const cbx_cbox *d,
+                        double oc, double oh)
 {
-    int i;
-    for (i = 0; i < 3; i++)
-        if (!fz_all_finite(A.m[i], 4)) return 0;
-    return fz_all_finite(IN.c, 3) && fz_all_finite(IN.h, 3);
+    static mpz_t C, H, S, g, tol;
+    static int init;
+    int j;
+    if (!init) {
+        mpz_inits(C, H, S, g, tol, (mpz_ptr)0);
+        init = 1;
+    }
+    xu_scaled_sh(C, m[3], FZ_SH2);
+    mpz_abs(S, C);
+    mpz_set_ui(H, 0);
+    for (j = 0; j < 3; j++) {
+        xu_scaled_mul(&k->x, k->z, m[j], d->c[j]);
+        mpz_add(C, C, k->z);
+        mpz_abs(k->z, k->z);
+        mpz_add(S, S, k->z);
+        xu_scaled_mul(&k->x, k->z, m[j], d->h[j]);
+        mpz_abs(k->z, k->z);
+        mpz_add(H, H, k->z);
+    }
+    mpz_add(S, S, H);
+    mpz_set_ui(tol, 1);
+    mpz_mul_2exp(tol, tol, FZ_SH2 - 1065 + 53);
+    mpz_addmul_ui(tol, S, 12);
+    mpz_neg(tol, tol);
+    /* lower: (oc - oh) - (C - H) */
+    xu_scaled_sh(g, oc, FZ_SH2);
+    xu_scaled_sh(k->w, oh, FZ_SH2);
+    mpz_sub(g, g, k->w);
+    mpz_sub(g, g, C);
+    mpz_add(g, g, H);
+    mpz_mul_2exp(g, g, 53);
+    if (mpz_cmp(g, tol) < 0)
+        fz_fail("axis %d: lower end beyond 12 u S' + 2^-1065 of the exact end (cbox_tight)", i);
+    /* upper: (C + H) - (oc + oh) */
+    xu_scaled_sh(g, oc, FZ_SH2);
+    xu_scaled_sh(k->w, oh, FZ_SH2);
+    mpz_add(g, g, k->w);
+    mpz_sub(g, C, g);
+    mpz_add(g, g, H);
+    mpz_mul_2exp(g, g, 53);
+    if (mpz_cmp(g, tol) < 0)
+        fz_fail("axis %d: upper end beyond 12 u S' + 2^-1065 of the exact end (cbox_tight)", i);
 }
 
-static void check_finite_input(fz_ctx *k)
-{
-    fz_ival *iv = fz_ivals();
-    fz_ext *e = fz_oends();
-    int i, oob = 0;
-    cbx_status want;
-
-    if (xu_cbox_is_empty(&IN)) {
-        fz_check_status(ST, CBX_EMPTY);
-        for (i = 0; i < 3; i++) fz_check_caxis(&OUT, i, 0);
-        return;
-    }
-    for (i = 0; i < 3; i++)
-        if (!xu_cbox_row_in_domain(&A, &IN, i)) oob |= 1 << i;
-    want = oob ? CBX_ERANGE : CBX_OK;
-    fz_check_status(ST, want);
-    if (!fz_ivals_cbox(k, iv, IN.c, IN.h)) fz_fail("oracle: non-empty cbox read as empty");
-    for (i = 0; i < 3; i++) {
-        double c = OUT.c[i], h = OUT.h[i];
-        if (oob & (1 << i)) {
-            fz_check_caxis(&OUT, i, 1);
-            continue;
-        }
-        if (!isfinite(c) || !isfinite(h) || !(h >= 0))
-            fz_fail("axis %d is in the domain but out c = %a, h = %a (not finite, h >= 0)",
-                    i, c, h);
-        fz_oends_cbox(k, e, c, h);
-        fz_check_corners(k, i, A.m[i], iv, e);
-    }
-}
-
-static void check_infinite_input(fz_ctx *k)
+static void check_result(fz_ctx *k)
 {
     fz_ival *iv = fz_ivals();
     fz_req *r = fz_reqs();
     fz_ext *e = fz_oends();
-    int i;
+    int i, kind[3];
+    cbx_status want = xu_cbox_expected_status(&A, &IN);
+
+    fz_check_status(ST, want);
+    if (want == CBX_EMPTY) {
+        for (i = 0; i < 3; i++) fz_check_caxis(&OUT, i, 0);
+        return;
+    }
+    for (i = 0; i < 3; i++) {
+        double c = OUT.c[i], h = OUT.h[i];
+        cbx_cbox d;
+        kind[i] = xu_cbox_axis_kind(&A, &IN, i);
+        if (kind[i] == XU_CAX_LOST) {
+            fz_check_caxis(&OUT, i, 1);
+            continue;
+        }
+        if (!isfinite(c) || !isfinite(h) || !(h >= 0))
+            fz_fail("axis %d is of kind %c but out c = %a, h = %a (not finite, h >= 0)",
+                    i, xu_cax_char[kind[i]], c, h);
+        xu_cbox_dropped(&A, &IN, i, &d); /* kind A: the input itself */
+        if (!fz_ivals_cbox(k, iv, d.c, d.h))
+            fz_fail("oracle: axis %d: the (dropped) box of an A / D row read as empty", i);
+        fz_oends_cbox(k, e, c, h);
+        fz_check_corners(k, i, A.m[i], iv, e);
+        check_tight(k, i, A.m[i], &d, c, h);
+    }
+    /* independent of exact_util's kinds: the extended-real reading */
     if (!fz_ivals_cbox(k, iv, IN.c, IN.h)) return; /* no real point */
     for (i = 0; i < 3; i++) {
         fz_row_req(k, A.m[i], iv, &r[0], &r[1]);
+        if (kind[i] != XU_CAX_LOST && (r[0].kind != FZ_REQ_BOUND || r[1].kind != FZ_REQ_BOUND))
+            fz_fail("oracles disagree: axis %d of kind %c but its exact image is not bounded",
+                    i, xu_cax_char[kind[i]]);
         fz_oends_cbox(k, e, OUT.c[i], OUT.h[i]);
         fz_check_req(i, &r[0], &r[1], e);
     }
@@ -143,10 +191,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (xu_cbox_has_nan(&A, &IN)) {
         fz_check_status(ST, CBX_EINVAL);
         for (i = 0; i < 3; i++) fz_check_caxis(&OUT, i, 1);
-    } else if (all_finite()) {
-        check_finite_input(k);
     } else {
-        check_infinite_input(k);
+        check_result(k);
     }
     return 0;
 }

@@ -142,6 +142,17 @@ static void transform_box(void)
          0.3, 1.3, -1.7, 2., 2.5, 2.75);
     seed(H, "in-place-half-space", 0x47, 18, MAT(0, 1, 0, 0, 2, 0, 0, 1, 1, 1, 1, 0),
          -INF, 0., 1., 2., 0., 1.);
+    /* half-spaces: each end on its own (rule B) */
+    seed(H, "half-space-neg-zero-vs-inf", 0x07, 18, MAT(-0., 1, 0, 2, 1, -0., 0, 0, 0, 0, -1, 0),
+         -INF, INF, 0., 1., 3., INF);
+    seed(H, "half-space-vertex-out", 0x07, 18, MAT(1e300, 0, 0, 0, 0, 1, 0, DBL_MAX, 1, 1, 1, 0),
+         -INF, 2., 0., INF, 0., 1.);
+    seed(H, "huge-unneeded-end", 0x07, 18, MAT(1, 0, 0, 0, -1, 0, 0, 0, 0, 1, 0, 0),
+         0., DBL_MAX, 0., 1., 0., 1.);
+    seed(H, "half-space-2p1018-vertex", 0x07, 18,
+         MAT(1, 0, 0, 0x1p1018, 0, -0x1p1018, 0, 0, 0, 0, 0x1p509, 0),
+         -0x1p1018, INF, 0., 0., -INF, 0x1p509);
+    seed(H, "box-at-minus-inf", 0x00, 18, ID3(0, 0, 0), 0., 1., -INF, -INF, 0., 1.);
 }
 
 static void transform_cbox(void)
@@ -197,6 +208,23 @@ static void transform_cbox(void)
          0.5, 1.5, 3.5, 0.5, -5.5, 0.5);
     seed(H, "conv-edge-c-h", 0x07, 18, ID3(0, 0, 0), 0x1p1018, 0x1p1018, -0x1p1018, 0x1p1018,
          0., 0x1p1018);
+    /* zero-coefficient columns dropped (0 * inf = 0): kind D */
+    seed(H, "zero-col-c-h-inf", 0x07, 18, MAT(0, 1, 2, 3, -0., -1, 0.5, 0, 0, 0.25, -4, -1),
+         -INF, INF, 1., 0.5, -2., 1.);
+    seed(H, "neg-zero-col-dbl-max", 0x07, 18, MAT(1, -0., 0, 0, -0., 0, 1, 0, 1, -0., 1, 1),
+         2., 1., DBL_MAX, 0x1p1023, -3., 0.5);
+    seed(H, "zero-col-2p1018-ulp", 0x07, 18, MAT(1, 0, 0, 0, 0, 0, 1, 0, 1, -0., 1, 0),
+         1., 1., -P1018U, P1018U, 1., 1.);
+    seed(H, "zero-col-mix-lost", 0x07, 18, MAT(0, 1, 1, 0, 0, 1, 0, 0, -0., 0, 2, 0),
+         INF, 1., 0., 1., 0., INF);
+    seed(H, "all-zero-map-inf-box", 0x00, 18, MAT(0, -0., 0, 5, -0., 0, -0., -0x1p1018, 0, 0, 0, -0.),
+         INF, INF, -INF, INF, DBL_MAX, INF);
+    seed(H, "zero-col-tiny-not-zero", 0x07, 18, MAT(TINY, 1, 0, 0, -TINY, 0, 1, 0, 0, 1, 1, 0),
+         INF, 0., 1., 1., 1., 1.);
+    seed(H, "zero-col-neg-h-empty", 0x00, 18, MAT(-0., 1, 0, 0, 0, 0, 1, 0, 0, 1, 1, 0),
+         INF, -INF, 1., 1., 1., 1.);
+    seed(H, "in-place-zero-col", 0x47, 18, MAT(0, 1, 0, 5, 0, 0, 1, -7, -0., 1, 1, 0),
+         -INF, INF, 3.5, 0.5, -5.5, 0.5);
 }
 
 static void box_to_cbox(void)
@@ -218,6 +246,7 @@ static void box_to_cbox(void)
     seed(H, "whole-lines", 0x07, 6, -INF, INF, -INF, INF, -INF, INF);
     seed(H, "half-lines", 0x07, 6, -INF, 0., 1., INF, 0., 1.);
     seed(H, "at-plus-inf", 0x07, 6, INF, INF, 0., 1., 0., 1.);
+    seed(H, "at-minus-inf", 0x00, 6, 0., 1., -INF, -INF, 0., 1.);
     seed(H, "cancel-near-zero", 0x07, 6, -0x1p1019, 0x1.fffffffffffffp1018, -1e-300, 1e-300,
          -3., 3.);
 }

@@ -1,0 +1,920 @@
+/*
+ * bench: the benchmark table of issue 5 (`make bench`, `make bench-smoke`).
+ *
+ * Usage: bench [-n N] [-r R] [-calls C] [-exact NE] [-gmp NG] [-cache NC]
+ *              [-big NB] [-seed S] [-o DIR]
+ *   N   cases of rows 1-6 (default 20000)      R   timed runs (11, odd)
+ *   C   calls per run (200000)                  NE  exactly measured (20000)
+ *   NG  cases of the GMP row (2000)             NC  in-cache throughput (1000)
+ *   NB  large-array throughput (4000000; 0: no throughput rows)
+ *   S   seed (20240501)                         DIR output (build/bench)
+ * Prints one markdown table to stdout and writes DIR/bench.md (the same
+ * table) and DIR/bench.dat (one block per plotted row, for scripts/bench.gp,
+ * which scripts/bench_plot.sh runs).  Exit status 1 if a certbox row has a
+ * containment failure or a call that does not return CBX_OK.
+ *   make bench        -n 20000 -r 11 -calls 200000 -exact 20000 -gmp 2000
+ *                     -cache 1000 -big 4000000 (about 1.5 GB of memory)
+ *   make bench-smoke  -n 2000 -r 5 -calls 20000 -exact 2000 -gmp 200
+ *                     -cache 1000 -big 100000 (about a second)
+ *
+ * Inputs (fixed seed S): N random affine maps M = R diag(s) with T (R a
+ * rotation from a uniform random unit quaternion, s_j = +-2^[-4,4] with 10%
+ * reflections, T_i = +-[0,1) * 2^[-2,10]) and N boxes of mixed sizes
+ * (center +-[0,1) * 2^[-4,8], half-width 2^[-12,6] per axis, 5% of the
+ * axes flat: lo = hi).  Every row below runs on these same N cases.
+ *
+ * Rows
+ *   1  naive 8 corners, RN: each corner transformed as a point, min / max
+ *      (pbrt, Embree); tests/bench_ref.h ref_naive8, not in the library.
+ *   2  classic Arvo interval form, RN (cglm, Godot): ref_arvo_box; the
+ *      baseline of the "vs row 2" column.  Unsound (no widening).
+ *   3  certbox cbx_transform_box (interval form, outward, proven).
+ *   4  certbox cbx_transform_cbox; its inputs are converted with
+ *      cbx_box_to_cbox (outward) before the timed loops.
+ *   5  classic Arvo center/half form, RN: ref_arvo_cbox on inputs converted
+ *      with c = (lo+hi)/2, h = (hi-lo)/2 in RN, before the timed loops.
+ *   6a sphere: cbx_sphere_box (exact dual-quadric bound t -+ sqrt(sum m^2),
+ *      outward) of the unit ball under the same N maps.
+ *   6b sphere by Arvo: cbx_transform_box of the ball's box [-1,1]^3 under
+ *      the same maps (sound, but the box of a rotated box); the notes give
+ *      the mean of vol(6b) / vol(6a) over the exact subset.
+ *   7  GMP exact: xu_row_bounds (tests/exact_util.c, fixed-point mpz) for
+ *      the 3 rows of each of the first NG cases: the exact L, H, S.
+ *   T1 throughput of cbx_transform_box over NC cases (in cache) and
+ *   T2 over NB cases (a large array, out of cache when above the L3 size
+ *      printed in the header; 192 bytes per case: map 96, box in 48,
+ *      box out 48); the same cases' map and box arrays and a memcpy of the
+ *      same number of bytes (in + out) are timed in the same run.
+ *
+ * Timing: clock_gettime(CLOCK_MONOTONIC) around one run; a run is P passes
+ * over the whole array (P = max(1, C / N): a run makes about C calls, so
+ * that it lasts milliseconds even for a small array).  One untimed warm-up
+ * run, then R timed runs; ns per box = median run time / (P N).  The
+ * baselines are static inline (as in the header-only libraries they stand
+ * for) and compiled with the library's flags (-std=c99 -ffp-contract=off
+ * -fno-fast-math -O2); certbox is an out-of-line call into libcertbox.a.
+ * Dead-code elimination is defeated by writing every result to an output
+ * array, by an opaque call (a volatile function pointer) after each pass,
+ * and by checksumming the output array after each run into a volatile sink
+ * (outside the timed region).
+ *
+ * Columns
+ *   ns/box       median over R runs (see above); "vs row 2" is its ratio
+ *                to row 2's; "M boxes/s" is 1000 / (ns/box).
+ *   CPU ns/box   the same median in the thread's CPU time
+ *                (CLOCK_THREAD_CPUTIME_ID): it leaves out the time the
+ *                thread was descheduled, so on a loaded machine it is the
+ *                figure to trust; on an idle one the two agree.
+ *   excess       for each end of each axis of the first NE cases, computed
+ *                exactly with GMP (exact_util): lower end L - lo, upper end
+ *                hi - H, with L, H the exact bounds of the image of the
+ *                original box, in units of u S + eta (u = 2^-53,
+ *                eta = 2^-1074, S = |t| + sum_j |m_j| max(|lo_j|, |hi_j|)
+ *                from xu_row_bounds); max and mean over all ends.  A
+ *                center/half output (c, h) is the real box [c - h, c + h],
+ *                taken exactly.  Negative = the end is inside the exact
+ *                image.  For the sphere rows the exact ends are
+ *                t -+ sqrt(sum_j m_j^2) (MPFR, 320 bits) and the unit is
+ *                u (|t| + sqrt(sum_j m_j^2)) + eta.
+ *   ulps         the same gaps in ulps of the exact end (the spacing of
+ *                binary64 at |L| or |H|), max and mean over the ends with
+ *                no cancellation, |end| >= S / 4 as in test_sphere (where
+ *                the end is small against S its ulp is small and the count
+ *                grows like S / |end|, measuring the cancellation rather
+ *                than the method); the number of ends left out is in the
+ *                notes when nonzero.
+ *   containment  ends that are NOT outside-or-equal the exact bound
+ *                (lo > L or hi < H, decided exactly), out of all ends
+ *                measured.  May be > 0 for rows 1, 2, 5; must be 0 for the
+ *                certbox rows.
+ *   proven       yes only for certbox functions (Frama-C/WP contract).
+ *   vs memcpy    throughput rows: time / time of memcpy of the same bytes.
+ */
+#define _POSIX_C_SOURCE 200112L
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <gmp.h>
+#include <mpfr.h>
+#include "certbox.h"
+#include "exact_util.h"
+#include "bench_ref.h"
+
+#ifndef BENCH_FLAGS
+#define BENCH_FLAGS "(unknown)"
+#endif
+#ifndef BENCH_CC
+#define BENCH_CC "cc"
+#endif
+#ifdef __VERSION__
+#define BENCH_CC_VERSION __VERSION__
+#else
+#define BENCH_CC_VERSION "(unknown)"
+#endif
+
+#define MAXR 101
+#define SPH_PREC 320
+
+/* ---- defeating dead-code elimination --------------------------------- */
+
+static void escape_impl(void *p) { (void)p; }
+static void (*volatile bench_escape)(void *) = escape_impl;
+static volatile uint64_t bench_sink;
+
+static uint64_t checksum(const void *p, size_t bytes)
+{
+    const unsigned char *c = (const unsigned char *)p;
+    uint64_t h = 1469598103934665603u, w;
+    size_t i;
+    for (i = 0; i + 8 <= bytes; i += 8) {
+        memcpy(&w, c + i, 8);
+        h = (h ^ w) * 1099511628211u;
+    }
+    return h;
+}
+
+/* ---- the cases ------------------------------------------------------- */
+
+typedef struct bench_ctx {
+    size_t n, ngmp;
+    cbx_affine *a;
+    cbx_box *in;
+    cbx_cbox *cin_cbx, *cin_rn;
+    cbx_box *o_naive, *o_arvo, *o_cbx, *o_sph, *o_sphbox;
+    cbx_cbox *co_cbx, *co_rn;
+    long bad;               /* certbox calls that did not return CBX_OK  */
+    xu_exact x;
+    uint64_t gmp_acc;
+    /* throughput arrays */
+    size_t nt;
+    cbx_affine *ta;
+    cbx_box *tin, *tout;
+    unsigned char *mdst;
+} bench_ctx;
+
+static double urand(xu_rng *r, double lo, double hi)
+{
+    return lo + (hi - lo) * xu_rng_unit(r);
+}
+
+static void gen_case(xu_rng *r, cbx_affine *a, cbx_box *b)
+{
+    double q[4], n2, R[3][3], s[3];
+    int i, j;
+    do { /* uniform unit quaternion by rejection */
+        for (i = 0; i < 4; i++) q[i] = urand(r, -1.0, 1.0);
+        n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+    } while (n2 > 1.0 || n2 < 1e-6);
+    n2 = sqrt(n2);
+    for (i = 0; i < 4; i++) q[i] /= n2;
+    {
+        double w = q[0], x = q[1], y = q[2], z = q[3];
+        R[0][0] = 1 - 2 * (y * y + z * z); R[0][1] = 2 * (x * y - w * z); R[0][2] = 2 * (x * z + w * y);
+        R[1][0] = 2 * (x * y + w * z); R[1][1] = 1 - 2 * (x * x + z * z); R[1][2] = 2 * (y * z - w * x);
+        R[2][0] = 2 * (x * z - w * y); R[2][1] = 2 * (y * z + w * x); R[2][2] = 1 - 2 * (x * x + y * y);
+    }
+    for (j = 0; j < 3; j++) {
+        s[j] = pow(2.0, urand(r, -4.0, 4.0));
+        if (xu_rng_int(r, 0, 9) == 0) s[j] = -s[j];
+    }
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) a->m[i][j] = R[i][j] * s[j];
+        a->m[i][3] = urand(r, -1.0, 1.0) * ldexp(1.0, xu_rng_int(r, -2, 10));
+    }
+    for (j = 0; j < 3; j++) {
+        double c = urand(r, -1.0, 1.0) * ldexp(1.0, xu_rng_int(r, -4, 8));
+        double h = xu_rng_int(r, 0, 19) == 0 ? 0.0 : pow(2.0, urand(r, -12.0, 6.0));
+        b->lo[j] = c - h;
+        b->hi[j] = c + h;
+    }
+}
+
+static void *xmalloc(size_t bytes)
+{
+    void *p = malloc(bytes ? bytes : 1);
+    if (!p) {
+        fprintf(stderr, "bench: out of memory (%lu bytes)\n", (unsigned long)bytes);
+        exit(2);
+    }
+    memset(p, 0, bytes); /* touch every page before timing */
+    return p;
+}
+
+/* ---- kernels: one pass over the first n cases ------------------------ */
+
+typedef void (*kern_fn)(bench_ctx *b, size_t n);
+
+static void k_naive(bench_ctx *b, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) ref_naive8(&b->a[i], &b->in[i], &b->o_naive[i]);
+}
+static void k_arvo(bench_ctx *b, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) ref_arvo_box(&b->a[i], &b->in[i], &b->o_arvo[i]);
+}
+static void k_cbx(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[i], &b->in[i], &b->o_cbx[i]) != CBX_OK;
+    b->bad += bad;
+}
+static void k_cbxc(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++) bad += cbx_transform_cbox(&b->a[i], &b->cin_cbx[i], &b->co_cbx[i]) != CBX_OK;
+    b->bad += bad;
+}
+static void k_arvoc(bench_ctx *b, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) ref_arvo_cbox(&b->a[i], &b->cin_rn[i], &b->co_rn[i]);
+}
+static void k_sph(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++) bad += cbx_sphere_box(&b->a[i], &b->o_sph[i]) != CBX_OK;
+    b->bad += bad;
+}
+static const cbx_box unit_box = {{-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}};
+static void k_sphbox(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[i], &unit_box, &b->o_sphbox[i]) != CBX_OK;
+    b->bad += bad;
+}
+static void k_gmp(bench_ctx *b, size_t n)
+{
+    size_t i;
+    int r;
+    uint64_t acc = 0;
+    for (i = 0; i < n; i++)
+        for (r = 0; r < 3; r++) {
+            xu_row_bounds(&b->x, &b->a[i], &b->in[i], r);
+            acc += (uint64_t)mpz_getlimbn(b->x.L, 0) + (uint64_t)mpz_getlimbn(b->x.H, 0);
+        }
+    b->gmp_acc += acc;
+}
+static void k_tp(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->ta[i], &b->tin[i], &b->tout[i]) != CBX_OK;
+    b->bad += bad;
+}
+static void k_memcpy(bench_ctx *b, size_t n)
+{
+    size_t na = n * sizeof(cbx_affine), nb = n * sizeof(cbx_box);
+    memcpy(b->mdst, b->ta, na);
+    memcpy(b->mdst + na, b->tin, nb);
+    memcpy(b->mdst + na + nb, b->tout, nb);
+}
+
+static double clock_ns(clockid_t id)
+{
+    struct timespec ts;
+    clock_gettime(id, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+static double now_ns(void) { return clock_ns(CLOCK_MONOTONIC); }
+#ifdef CLOCK_THREAD_CPUTIME_ID
+static double cpu_ns(void) { return clock_ns(CLOCK_THREAD_CPUTIME_ID); }
+#else
+static double cpu_ns(void) { return (double)clock() * (1e9 / CLOCKS_PER_SEC); }
+#endif
+
+static int cmp_double(const void *p, const void *q)
+{
+    double x = *(const double *)p, y = *(const double *)q;
+    return (x > y) - (x < y);
+}
+
+/* Median ns per case of R runs of `passes` passes over n cases (wall
+ * clock, CLOCK_MONOTONIC); *cpu: the same with the thread's CPU time.
+ * out/bytes: the output to checksum after each run. */
+static double time_kernel(bench_ctx *b, kern_fn f, size_t n, long passes, int R,
+                          const void *out, size_t bytes, double *cpu)
+{
+    double t[MAXR], c[MAXR];
+    int r;
+    long p;
+    *cpu = -1.0;
+    if (n == 0) return -1.0;
+    for (p = 0; p < passes; p++) { /* warm-up run */
+        f(b, n);
+        bench_escape(b);
+    }
+    for (r = 0; r < R; r++) {
+        double c0 = cpu_ns(), t0 = now_ns(), t1, c1;
+        for (p = 0; p < passes; p++) {
+            f(b, n);
+            bench_escape(b);
+        }
+        t1 = now_ns();
+        c1 = cpu_ns();
+        t[r] = (t1 - t0) / ((double)passes * (double)n);
+        c[r] = (c1 - c0) / ((double)passes * (double)n);
+        bench_sink ^= checksum(out, bytes) ^ b->gmp_acc;
+    }
+    qsort(t, (size_t)R, sizeof t[0], cmp_double);
+    qsort(c, (size_t)R, sizeof c[0], cmp_double);
+    *cpu = c[R / 2];
+    return t[R / 2];
+}
+
+static long passes_for(long calls, size_t n)
+{
+    long p = n ? (long)(calls / (long)n) : 1;
+    return p < 1 ? 1 : p;
+}
+
+/* ---- exact measurement ----------------------------------------------- */
+
+typedef struct acc {
+    long ends, fails, nc_ends, cancel;
+    double max_u, sum_u, min_u, max_ulp, sum_ulp;
+} acc;
+
+static void acc_init(acc *s)
+{
+    memset(s, 0, sizeof *s);
+    s->max_u = -HUGE_VAL;
+    s->min_u = HUGE_VAL;
+    s->max_ulp = -HUGE_VAL;
+}
+
+static void acc_add(acc *s, double units, int fail, int nocancel, double ulps)
+{
+    s->ends++;
+    s->fails += fail != 0;
+    s->sum_u += units;
+    if (units > s->max_u) s->max_u = units;
+    if (units < s->min_u) s->min_u = units;
+    if (nocancel) {
+        s->nc_ends++;
+        s->sum_ulp += ulps;
+        if (ulps > s->max_ulp) s->max_ulp = ulps;
+    } else {
+        s->cancel++;
+    }
+}
+
+typedef struct ex_scratch { mpz_t gap, v, w, t; } ex_scratch;
+
+/* gap (scaled by 2^XU_SHIFT) in ulps of the exact end E (scaled). */
+static double gap_ulps(const mpz_t gap, const mpz_t E)
+{
+    long ee, eg, ue;
+    double fg;
+    if (mpz_sgn(gap) == 0) return 0.0;
+    if (mpz_sgn(E) == 0) {
+        ue = -1074;
+    } else {
+        (void)mpz_get_d_2exp(&ee, E); /* |E| in [2^(ee-1), 2^ee) */
+        ue = ee - XU_SHIFT - 53;
+        if (ue < -1074) ue = -1074;
+    }
+    fg = mpz_get_d_2exp(&eg, gap);
+    return ldexp(fg, (int)(eg - XU_SHIFT - ue));
+}
+
+/* One end: gap already in e->gap, E the exact end, S the scale. */
+static void record_end(xu_exact *x, ex_scratch *e, acc *s, const mpz_t E, const mpz_t S)
+{
+    double units = xu_units(x, e->gap, S);
+    int nocancel;
+    mpz_abs(e->t, E);
+    mpz_mul_2exp(e->t, e->t, 2);
+    nocancel = mpz_cmp(e->t, S) >= 0;
+    acc_add(s, units, mpz_sgn(e->gap) < 0, nocancel, nocancel ? gap_ulps(e->gap, E) : 0.0);
+}
+
+/* A box output [lo, hi] on the axis of the last xu_row_bounds. */
+static void record_box(xu_exact *x, ex_scratch *e, acc *s, double lo, double hi)
+{
+    xu_scaled_d(x, e->v, lo);
+    mpz_sub(e->gap, x->L, e->v);
+    record_end(x, e, s, x->L, x->S);
+    xu_scaled_d(x, e->v, hi);
+    mpz_sub(e->gap, e->v, x->H);
+    record_end(x, e, s, x->H, x->S);
+}
+
+/* A center/half output: the real box [c - h, c + h], exactly. */
+static void record_cbox(xu_exact *x, ex_scratch *e, acc *s, double c, double h)
+{
+    xu_scaled_d(x, e->v, c);
+    xu_scaled_d(x, e->w, h);
+    mpz_sub(e->gap, e->v, e->w);          /* c - h */
+    mpz_sub(e->gap, x->L, e->gap);        /* L - (c - h) */
+    record_end(x, e, s, x->L, x->S);
+    mpz_add(e->gap, e->v, e->w);          /* c + h */
+    mpz_sub(e->gap, e->gap, x->H);
+    record_end(x, e, s, x->H, x->S);
+}
+
+typedef struct sph_scratch { mpz_t s, m; mpfr_t R, T, E, D, G, U; } sph_scratch;
+
+/* One end of a sphere output against t -+ sqrt(s) (s exact, scaled by
+ * 2^(2*1074)); upper = 0: lower end. */
+static void record_sph_end(xu_exact *x, sph_scratch *k, acc *s, double t, double v, int upper)
+{
+    int ok;
+    double units, ulps = 0.0;
+    int nocancel;
+    if (upper) {
+        mpfr_add(k->E, k->T, k->R, MPFR_RNDN);
+        mpfr_set_d(k->G, v, MPFR_RNDN);
+        mpfr_sub(k->G, k->G, k->E, MPFR_RNDN);       /* hi - E */
+        ok = xu_sqrt_hi_ok(x, k->s, 1074, t, v);
+    } else {
+        mpfr_sub(k->E, k->T, k->R, MPFR_RNDN);
+        mpfr_set_d(k->G, v, MPFR_RNDN);
+        mpfr_sub(k->G, k->E, k->G, MPFR_RNDN);       /* E - lo */
+        ok = xu_sqrt_lo_ok(x, k->s, 1074, t, v);
+    }
+    mpfr_div(k->U, k->G, k->D, MPFR_RNDN);
+    units = mpfr_get_d(k->U, MPFR_RNDN);
+    /* |E| * 4 >= |t| + sqrt(s) (D = u (|t| + sqrt s) + eta, so compare
+     * with the scale directly) */
+    mpfr_abs(k->U, k->T, MPFR_RNDN);
+    mpfr_add(k->U, k->U, k->R, MPFR_RNDN);
+    mpfr_div_2ui(k->U, k->U, 2, MPFR_RNDN);
+    nocancel = mpfr_cmpabs(k->E, k->U) >= 0;
+    if (nocancel && !mpfr_zero_p(k->G)) {
+        long ue = mpfr_zero_p(k->E) ? -1074 : (long)mpfr_get_exp(k->E) - 53;
+        if (ue < -1074) ue = -1074;
+        mpfr_div_2si(k->U, k->G, ue, MPFR_RNDN);
+        ulps = mpfr_get_d(k->U, MPFR_RNDN);
+    }
+    acc_add(s, units, !ok, nocancel, ulps);
+}
+
+static void measure_sphere(bench_ctx *b, size_t ne, acc *sph, acc *sphbox, double *volratio)
+{
+    sph_scratch k;
+    size_t i;
+    int r, j;
+    double vsum = 0.0;
+    mpz_inits(k.s, k.m, (mpz_ptr)0);
+    mpfr_inits2(SPH_PREC, k.R, k.T, k.E, k.D, k.G, k.U, (mpfr_ptr)0);
+    for (i = 0; i < ne; i++) {
+        const cbx_affine *a = &b->a[i];
+        double v = 1.0;
+        for (r = 0; r < 3; r++) {
+            double t = a->m[r][3];
+            mpz_set_ui(k.s, 0);
+            for (j = 0; j < 3; j++) {
+                xu_scaled_mul(&b->x, k.m, a->m[r][j], a->m[r][j]);
+                mpz_add(k.s, k.s, k.m);
+            }
+            mpfr_set_z(k.R, k.s, MPFR_RNDN);
+            mpfr_div_2ui(k.R, k.R, 2 * 1074, MPFR_RNDN);
+            mpfr_sqrt(k.R, k.R, MPFR_RNDN);
+            mpfr_set_d(k.T, t, MPFR_RNDN);
+            /* D = u (|t| + R) + eta */
+            mpfr_abs(k.D, k.T, MPFR_RNDN);
+            mpfr_add(k.D, k.D, k.R, MPFR_RNDN);
+            mpfr_div_2ui(k.D, k.D, 53, MPFR_RNDN);
+            mpfr_set_ui_2exp(k.U, 1, -1074, MPFR_RNDN);
+            mpfr_add(k.D, k.D, k.U, MPFR_RNDN);
+            record_sph_end(&b->x, &k, sph, t, b->o_sph[i].lo[r], 0);
+            record_sph_end(&b->x, &k, sph, t, b->o_sph[i].hi[r], 1);
+            record_sph_end(&b->x, &k, sphbox, t, b->o_sphbox[i].lo[r], 0);
+            record_sph_end(&b->x, &k, sphbox, t, b->o_sphbox[i].hi[r], 1);
+            v *= (b->o_sphbox[i].hi[r] - b->o_sphbox[i].lo[r])
+                 / (b->o_sph[i].hi[r] - b->o_sph[i].lo[r]);
+        }
+        vsum += v;
+    }
+    *volratio = ne ? vsum / (double)ne : 0.0;
+    mpz_clears(k.s, k.m, (mpz_ptr)0);
+    mpfr_clears(k.R, k.T, k.E, k.D, k.G, k.U, (mpfr_ptr)0);
+}
+
+/* ---- output ---------------------------------------------------------- */
+
+static FILE *md_file;
+
+static void out(const char *fmt, ...)
+{
+    va_list ap, aq;
+    va_start(ap, fmt);
+    va_copy(aq, ap);
+    vprintf(fmt, ap);
+    if (md_file) vfprintf(md_file, fmt, aq);
+    va_end(aq);
+    va_end(ap);
+}
+
+typedef struct row {
+    const char *id, *name, *proven;
+    double ns;           /* < 0: not timed */
+    double cpu;          /* the same in thread CPU time */
+    const acc *ex;       /* 0: no excess measured */
+    int exact_ref;       /* the GMP reference: excess 0 by definition */
+    double vs_memcpy;    /* < 0: none */
+    char note[256];
+    int proven_code;     /* for the plot: 1 proven, 0 not, 2 exact */
+    int plot;
+} row;
+
+static void machine_line(char *model, size_t msz, int *cores)
+{
+    FILE *f = fopen("/proc/cpuinfo", "r");
+    char line[512];
+    snprintf(model, msz, "(unknown)");
+    *cores = 0;
+    if (!f) return;
+    while (fgets(line, sizeof line, f)) {
+        if (strncmp(line, "model name", 10) == 0 && !strcmp(model, "(unknown)")) {
+            char *p = strchr(line, ':');
+            if (p) {
+                size_t l;
+                p++;
+                while (*p == ' ' || *p == '\t') p++;
+                snprintf(model, msz, "%s", p);
+                l = strlen(model);
+                while (l && (model[l - 1] == '\n' || model[l - 1] == ' ')) model[--l] = 0;
+            }
+        }
+        if (strncmp(line, "processor", 9) == 0) (*cores)++;
+    }
+    fclose(f);
+}
+
+/* "L1d 48K, L2 2048K, L3 ..." from sysfs (cpu0), or "" */
+static void cache_line(char *s, size_t sz)
+{
+    int idx;
+    size_t l = 0;
+    s[0] = 0;
+    for (idx = 0; idx < 8; idx++) {
+        char p[128], level[32] = "", type[32] = "", size[32] = "";
+        FILE *f;
+        snprintf(p, sizeof p, "/sys/devices/system/cpu/cpu0/cache/index%d/level", idx);
+        if (!(f = fopen(p, "r"))) break;
+        if (!fgets(level, sizeof level, f)) level[0] = 0;
+        fclose(f);
+        snprintf(p, sizeof p, "/sys/devices/system/cpu/cpu0/cache/index%d/type", idx);
+        if ((f = fopen(p, "r"))) { if (!fgets(type, sizeof type, f)) type[0] = 0; fclose(f); }
+        snprintf(p, sizeof p, "/sys/devices/system/cpu/cpu0/cache/index%d/size", idx);
+        if ((f = fopen(p, "r"))) { if (!fgets(size, sizeof size, f)) size[0] = 0; fclose(f); }
+        level[strcspn(level, "\n")] = 0;
+        type[strcspn(type, "\n")] = 0;
+        size[strcspn(size, "\n")] = 0;
+        if (!strcmp(type, "Instruction")) continue;
+        if (l + 1 < sz)
+            l += (size_t)snprintf(s + l, sz - l, "%sL%s%s %s", l ? ", " : "", level,
+                                  !strcmp(type, "Data") ? "d" : "", size);
+        if (l >= sz) { s[sz - 1] = 0; break; }
+    }
+}
+
+static void fmt_num(char *s, size_t sz, double v)
+{
+    if (v != v) snprintf(s, sz, "-");
+    else if (v == 0.0) snprintf(s, sz, "0");
+    else if (fabs(v) >= 1e5 || fabs(v) < 1e-2) snprintf(s, sz, "%.3g", v);
+    else snprintf(s, sz, "%.2f", v);
+}
+
+static void mkdir_p(const char *dir)
+{
+    char buf[1024];
+    size_t i, l = strlen(dir);
+    if (l >= sizeof buf) return;
+    strcpy(buf, dir);
+    for (i = 1; i <= l; i++) {
+        if (buf[i] == '/' || buf[i] == 0) {
+            char c = buf[i];
+            buf[i] = 0;
+            if (mkdir(buf, 0777) != 0 && errno != EEXIST) {
+                fprintf(stderr, "bench: cannot create %s\n", buf);
+                return;
+            }
+            buf[i] = c;
+        }
+    }
+}
+
+static void usage(void)
+{
+    fprintf(stderr, "usage: bench [-n N] [-r R] [-calls C] [-exact NE] [-gmp NG] "
+                    "[-cache NC] [-big NB] [-seed S] [-o DIR]\n");
+    exit(2);
+}
+
+int main(int argc, char **argv)
+{
+    size_t n = 20000, ne = 20000, ng = 2000, nc = 1000, nb = 4000000;
+    long calls = 200000;
+    int R = 11, i, cores;
+    unsigned long seed = 20240501;
+    const char *dir = "build/bench";
+    bench_ctx b;
+    xu_rng rng;
+    size_t k;
+    char model[256], path[1200], loadavg[128] = "(unknown)";
+    row rows[12];
+    int nrows = 0;
+    acc ex_box[5], ex_sph, ex_sphbox;
+    double volratio = 0.0;
+    double ns_arvo;
+    long bad_timed, conv_bad;
+    FILE *f;
+
+    for (i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : 0;
+        if (!v) usage();
+        if (!strcmp(o, "-n")) n = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-r")) R = atoi(v);
+        else if (!strcmp(o, "-calls")) calls = atol(v);
+        else if (!strcmp(o, "-exact")) ne = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-gmp")) ng = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-cache")) nc = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-big")) nb = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-seed")) seed = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-o")) dir = v;
+        else usage();
+        i++;
+    }
+    if (n < 1 || R < 1 || R > MAXR || calls < 1) usage();
+    if (ne > n) ne = n;
+    if (ng > n) ng = n;
+    if (nb > 0 && nc > nb) nc = nb;
+
+    /* ---- inputs ---- */
+    memset(&b, 0, sizeof b);
+    b.n = n;
+    b.ngmp = ng;
+    b.a = xmalloc(n * sizeof *b.a);
+    b.in = xmalloc(n * sizeof *b.in);
+    b.cin_cbx = xmalloc(n * sizeof *b.cin_cbx);
+    b.cin_rn = xmalloc(n * sizeof *b.cin_rn);
+    b.o_naive = xmalloc(n * sizeof(cbx_box));
+    b.o_arvo = xmalloc(n * sizeof(cbx_box));
+    b.o_cbx = xmalloc(n * sizeof(cbx_box));
+    b.o_sph = xmalloc(n * sizeof(cbx_box));
+    b.o_sphbox = xmalloc(n * sizeof(cbx_box));
+    b.co_cbx = xmalloc(n * sizeof(cbx_cbox));
+    b.co_rn = xmalloc(n * sizeof(cbx_cbox));
+    rng.s = seed;
+    for (k = 0; k < n; k++) {
+        gen_case(&rng, &b.a[k], &b.in[k]);
+        if (cbx_box_to_cbox(&b.in[k], &b.cin_cbx[k]) != CBX_OK) b.bad++;
+        ref_box_to_cbox(&b.in[k], &b.cin_rn[k]);
+    }
+    xu_init(&b.x);
+    b.nt = nb;
+    if (nb > 0) {
+        b.ta = xmalloc(nb * sizeof *b.ta);
+        b.tin = xmalloc(nb * sizeof *b.tin);
+        b.tout = xmalloc(nb * sizeof *b.tout);
+        b.mdst = xmalloc(nb * (sizeof(cbx_affine) + 2 * sizeof(cbx_box)));
+        rng.s = seed + 1;
+        for (k = 0; k < nb; k++) gen_case(&rng, &b.ta[k], &b.tin[k]);
+    }
+    conv_bad = b.bad;
+    b.bad = 0;
+
+    /* ---- timed rows ---- */
+    {
+        long P = passes_for(calls, n);
+        double t_naive, t_arvo, t_cbx, t_cbxc, t_arvoc, t_sph, t_sphbox, t_gmp;
+        double t_tc = -1, t_mc = -1, t_tb = -1, t_mb = -1;
+        double c_naive, c_arvo, c_cbx, c_cbxc, c_arvoc, c_sph, c_sphbox, c_gmp;
+        double c_tc = -1, c_mc = -1, c_tb = -1, c_mb = -1;
+        t_naive = time_kernel(&b, k_naive, n, P, R, b.o_naive, n * sizeof(cbx_box), &c_naive);
+        t_arvo = time_kernel(&b, k_arvo, n, P, R, b.o_arvo, n * sizeof(cbx_box), &c_arvo);
+        t_cbx = time_kernel(&b, k_cbx, n, P, R, b.o_cbx, n * sizeof(cbx_box), &c_cbx);
+        t_cbxc = time_kernel(&b, k_cbxc, n, P, R, b.co_cbx, n * sizeof(cbx_cbox), &c_cbxc);
+        t_arvoc = time_kernel(&b, k_arvoc, n, P, R, b.co_rn, n * sizeof(cbx_cbox), &c_arvoc);
+        t_sph = time_kernel(&b, k_sph, n, P, R, b.o_sph, n * sizeof(cbx_box), &c_sph);
+        t_sphbox = time_kernel(&b, k_sphbox, n, P, R, b.o_sphbox, n * sizeof(cbx_box), &c_sphbox);
+        t_gmp = time_kernel(&b, k_gmp, ng, 1, R, b.o_arvo, 0, &c_gmp);
+        if (nb > 0) {
+            long Pc = passes_for(calls, nc), Pb = passes_for(calls, nb);
+            size_t pb = sizeof(cbx_affine) + 2 * sizeof(cbx_box);
+            t_tc = time_kernel(&b, k_tp, nc, Pc, R, b.tout, nc * sizeof(cbx_box), &c_tc);
+            t_mc = time_kernel(&b, k_memcpy, nc, Pc, R, b.mdst, nc * pb, &c_mc);
+            t_tb = time_kernel(&b, k_tp, nb, Pb, R, b.tout, nb * sizeof(cbx_box), &c_tb);
+            t_mb = time_kernel(&b, k_memcpy, nb, Pb, R, b.mdst, nb * pb, &c_mb);
+        }
+        bad_timed = b.bad;
+        ns_arvo = t_arvo;
+
+        /* ---- exact measurement (untimed), on the first ne cases ---- */
+        {
+            ex_scratch e;
+            int r;
+            mpz_inits(e.gap, e.v, e.w, e.t, (mpz_ptr)0);
+            for (i = 0; i < 5; i++) acc_init(&ex_box[i]);
+            for (k = 0; k < ne; k++)
+                for (r = 0; r < 3; r++) {
+                    xu_row_bounds(&b.x, &b.a[k], &b.in[k], r);
+                    record_box(&b.x, &e, &ex_box[0], b.o_naive[k].lo[r], b.o_naive[k].hi[r]);
+                    record_box(&b.x, &e, &ex_box[1], b.o_arvo[k].lo[r], b.o_arvo[k].hi[r]);
+                    record_box(&b.x, &e, &ex_box[2], b.o_cbx[k].lo[r], b.o_cbx[k].hi[r]);
+                    record_cbox(&b.x, &e, &ex_box[3], b.co_cbx[k].c[r], b.co_cbx[k].h[r]);
+                    record_cbox(&b.x, &e, &ex_box[4], b.co_rn[k].c[r], b.co_rn[k].h[r]);
+                }
+            mpz_clears(e.gap, e.v, e.w, e.t, (mpz_ptr)0);
+            acc_init(&ex_sph);
+            acc_init(&ex_sphbox);
+            measure_sphere(&b, ne, &ex_sph, &ex_sphbox, &volratio);
+        }
+
+#define ADDROW(ID, NAME, NS, EX, PROV, PCODE) do { \
+            row *w_ = &rows[nrows++]; memset(w_, 0, sizeof *w_); \
+            w_->id = ID; w_->name = NAME; w_->ns = t_##NS; w_->cpu = c_##NS; w_->ex = EX; \
+            w_->proven = PROV; w_->proven_code = PCODE; w_->vs_memcpy = -1.0; \
+            w_->plot = 1; } while (0)
+        ADDROW("1", "naive 8 corners, RN (pbrt, Embree)", naive, &ex_box[0], "no", 0);
+        ADDROW("2", "Arvo interval, RN (cglm, Godot)", arvo, &ex_box[1], "no", 0);
+        ADDROW("3", "certbox `cbx_transform_box`", cbx, &ex_box[2], "yes", 1);
+        ADDROW("4", "certbox `cbx_transform_cbox`", cbxc, &ex_box[3], "yes", 1);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "input from `cbx_box_to_cbox` (untimed); excess against the original box, "
+                 "so it includes the conversion's widening");
+        ADDROW("5", "Arvo center/half, RN", arvoc, &ex_box[4], "no", 0);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "input (lo+hi)/2, (hi-lo)/2 in RN (untimed)");
+        ADDROW("6a", "sphere: certbox `cbx_sphere_box`", sph, &ex_sph, "yes", 1);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "exact dual-quadric bound; units u(\\|t\\|+sqrt s)+eta");
+        ADDROW("6b", "sphere: Arvo on [-1,1]^3 (`cbx_transform_box`)", sphbox, &ex_sphbox, "yes", 1);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "vs the exact sphere bound; mean volume ratio to 6a: %.3f", volratio);
+        ADDROW("7", "GMP exact (`xu_row_bounds` x 3)", gmp, (const acc *)0, "n/a (exact)", 2);
+        rows[nrows - 1].exact_ref = 1;
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note, "first %lu cases; the reference",
+                 (unsigned long)ng);
+        if (nb > 0) {
+            size_t pb = sizeof(cbx_affine) + 2 * sizeof(cbx_box);
+            ADDROW("T1", "throughput `cbx_transform_box`, in cache", tc, (const acc *)0, "yes", 1);
+            rows[nrows - 1].plot = 0;
+            rows[nrows - 1].vs_memcpy = t_tc / t_mc;
+            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                     "%lu cases, %.0f KB in+out; memcpy %.2f ns/case (%.1f GB/s)",
+                     (unsigned long)nc, (double)(nc * pb) / 1e3, t_mc, (double)pb / t_mc);
+            (void)c_mc;
+            ADDROW("T2", "throughput `cbx_transform_box`, large array", tb, (const acc *)0, "yes", 1);
+            rows[nrows - 1].plot = 0;
+            rows[nrows - 1].vs_memcpy = t_tb / t_mb;
+            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                     "%lu cases, %.0f MB in+out (out of cache if above L3); memcpy %.2f ns/case (%.1f GB/s)",
+                     (unsigned long)nb, (double)(nb * pb) / 1e6, t_mb, (double)pb / t_mb);
+            (void)c_mb;
+        }
+#undef ADDROW
+
+        /* ---- the table ---- */
+        mkdir_p(dir);
+        snprintf(path, sizeof path, "%s/bench.md", dir);
+        md_file = fopen(path, "w");
+        if (!md_file) fprintf(stderr, "bench: cannot write %s\n", path);
+        machine_line(model, sizeof model, &cores);
+        f = fopen("/proc/loadavg", "r");
+        if (f) {
+            if (fgets(loadavg, sizeof loadavg, f)) {
+                size_t l = strlen(loadavg);
+                if (l && loadavg[l - 1] == '\n') loadavg[l - 1] = 0;
+            }
+            fclose(f);
+        }
+        {
+            time_t tt = time(0);
+            char when[64];
+            strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", gmtime(&tt));
+            out("# certbox benchmark (tests/bench.c)\n\n");
+            char caches[200];
+            cache_line(caches, sizeof caches);
+            out("- machine: %s, %d cores%s%s; load average at the end: %s\n", model, cores,
+                caches[0] ? "; " : "", caches, loadavg);
+            out("- compiler: %s (%s), flags: `%s`\n", BENCH_CC, BENCH_CC_VERSION, BENCH_FLAGS);
+            out("- certbox %s; %s; seed %lu\n", CBX_VERSION_STRING, when, seed);
+            out("- timing: median of %d runs (after one warm-up run); a run = %ld passes over "
+                "%lu cases (throughput: %ld passes over %lu, %ld over %lu); rows 1-6 on the same "
+                "%lu random cases, row 7 on the first %lu\n",
+                R, P, (unsigned long)n, passes_for(calls, nc), (unsigned long)nc,
+                passes_for(calls, nb), (unsigned long)nb, (unsigned long)n, (unsigned long)ng);
+            out("- excess and containment: exact (GMP, MPFR for spheres) on the first %lu cases "
+                "(%lu ends per row); units of u S + eta (u = 2^-53, eta = 2^-1074); ulps of the "
+                "exact end on the ends with \\|end\\| >= S/4\n\n", (unsigned long)ne,
+                (unsigned long)(6 * ne));
+        }
+        out("| # | method | ns/box | vs row 2 | M boxes/s | CPU ns/box | max excess | mean excess "
+            "| max ulps | mean ulps | containment failures | proven | vs memcpy | notes |\n");
+        out("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---|\n");
+        for (i = 0; i < nrows; i++) {
+            row *w = &rows[i];
+            char c1[32], c2[32], c3[32], c4[32], c5[32], c6[32], c7[32], c8[32], c9[64], c10[32];
+            char note[400];
+            fmt_num(c1, sizeof c1, w->ns);
+            if (w->ns > 0 && ns_arvo > 0 && !(w->id[0] == 'T')) fmt_num(c2, sizeof c2, w->ns / ns_arvo);
+            else snprintf(c2, sizeof c2, "-");
+            fmt_num(c3, sizeof c3, w->ns > 0 ? 1e3 / w->ns : NAN);
+            fmt_num(c8, sizeof c8, w->cpu > 0 ? w->cpu : NAN);
+            snprintf(note, sizeof note, "%s", w->note);
+            if (w->ex && w->ex->ends) {
+                const acc *s = w->ex;
+                fmt_num(c4, sizeof c4, s->max_u);
+                fmt_num(c5, sizeof c5, s->sum_u / (double)s->ends);
+                fmt_num(c6, sizeof c6, s->nc_ends ? s->max_ulp : NAN);
+                fmt_num(c7, sizeof c7, s->nc_ends ? s->sum_ulp / (double)s->nc_ends : NAN);
+                snprintf(c9, sizeof c9, "%ld / %ld", s->fails, s->ends);
+                if (s->fails) {
+                    char c[32];
+                    size_t l = strlen(note);
+                    fmt_num(c, sizeof c, s->min_u);
+                    snprintf(note + l, sizeof note - l, "%sworst end %s units inside",
+                             l ? "; " : "", c);
+                }
+                if (s->cancel) {
+                    size_t l = strlen(note);
+                    snprintf(note + l, sizeof note - l, "%s%ld ends with \\|end\\| < S/4 left out of ulps",
+                             l ? "; " : "", s->cancel);
+                }
+            } else if (w->exact_ref) {
+                snprintf(c4, sizeof c4, "0");
+                snprintf(c5, sizeof c5, "0");
+                snprintf(c6, sizeof c6, "0");
+                snprintf(c7, sizeof c7, "0");
+                snprintf(c9, sizeof c9, "0 (exact)");
+            } else {
+                snprintf(c4, sizeof c4, "-");
+                snprintf(c5, sizeof c5, "-");
+                snprintf(c6, sizeof c6, "-");
+                snprintf(c7, sizeof c7, "-");
+                snprintf(c9, sizeof c9, "-");
+            }
+            if (w->vs_memcpy > 0) snprintf(c10, sizeof c10, "%.2f", w->vs_memcpy);
+            else snprintf(c10, sizeof c10, "-");
+            out("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+                w->id, w->name, c1, c2, c3, c8, c4, c5, c6, c7, c9, w->proven, c10, note);
+        }
+        if (conv_bad)
+            out("\n**%ld `cbx_box_to_cbox` calls did not return CBX_OK**\n", conv_bad);
+        if (bad_timed)
+            out("\n**%ld certbox calls did not return CBX_OK** (inputs should all be in the domain)\n",
+                bad_timed);
+        out("\nmax / mean excess: signed (negative = inside the exact image); a proven row "
+            "must have 0 containment failures.  Measured once; timings vary with load.\n\n");
+        if (md_file) fclose(md_file);
+
+        /* ---- bench.dat for scripts/bench.gp ---- */
+        snprintf(path, sizeof path, "%s/bench.dat", dir);
+        f = fopen(path, "w");
+        if (!f) {
+            fprintf(stderr, "bench: cannot write %s\n", path);
+        } else {
+            fprintf(f, "# certbox bench (tests/bench.c), for scripts/bench.gp: one data block\n"
+                       "# per plotted row (blocks separated by two blank lines), each a header\n"
+                       "# line (its 6th field is the row's title) and one data line.\n");
+            fprintf(f, "# machine: %s, %d cores; %s\n", model, cores, BENCH_CC_VERSION);
+            fprintf(f, "# columns: row ns_per_box max_excess y_plotted proven(1 yes, 0 no, 2 exact) label\n");
+            fprintf(f, "# y_plotted: max excess, floored at 0.01 for the log scale (exact: 0)\n");
+            for (i = 0; i < nrows; i++) {
+                row *w = &rows[i];
+                double mx = w->ex && w->ex->ends ? w->ex->max_u : 0.0;
+                double y = mx < 0.01 ? 0.01 : mx;
+                char lab[200];
+                size_t p = 0;
+                const char *q;
+                if (!w->plot) continue;
+                for (q = w->name; *q && p + 1 < sizeof lab; q++)
+                    if (*q != '`' && *q != '"') lab[p++] = *q;
+                lab[p] = 0;
+                fprintf(f, "\n\nrow ns_per_box max_excess y_plotted proven \"%s: %s%s\"\n", w->id, lab,
+                        w->proven_code == 1 ? " [proven]" : w->proven_code == 2 ? " [exact]" : "");
+                fprintf(f, "%s %.6g %.6g %.6g %d \"%s\"\n", w->id, w->ns, mx, y, w->proven_code, w->id);
+            }
+            fclose(f);
+        }
+        fprintf(stderr, "bench: wrote %s/bench.md and %s/bench.dat (sink %llx)\n", dir, dir,
+                (unsigned long long)bench_sink);
+    }
+    xu_clear(&b.x);
+    {
+        long fails = ex_box[2].fails + ex_box[3].fails + ex_sph.fails + ex_sphbox.fails;
+        if (fails || bad_timed || conv_bad) {
+            fprintf(stderr, "bench: FAILED: %ld containment failures in certbox rows, "
+                            "%ld calls not CBX_OK\n", fails, bad_timed);
+            return 1;
+        }
+    }
+    return 0;
+}
