@@ -165,7 +165,7 @@ clean:
 	rm -rf $(B)
 
 # ---- benchmark (issue 5) ---------------------------------------------------
-# make bench        the table (build/bench/bench.md, bench.dat, bench.png)
+# make bench        the table (build/bench-out/bench.md, bench.dat, bench.png)
 # make bench-smoke  the same table on tiny sizes (a few seconds); no plot
 #                   unless gnuplot is already installed
 # tests/bench.c and the baselines of tests/bench_ref.h are built with the
@@ -180,8 +180,8 @@ $(B)/bench: tests/bench.c tests/bench_ref.h $(TESTUTIL) tests/exact_util.h $(B)/
 bench: check-deps-test
 	@sh scripts/deps.sh bench || echo "bench: note: gnuplot could not be installed; the plot will be skipped"
 	$(MAKE) $(B)/bench
-	./$(B)/bench $(BENCHARGS) -o $(B)/bench
-	@sh scripts/bench_plot.sh $(B)/bench
+	./$(B)/bench $(BENCHARGS) -o $(B)/bench-out
+	@sh scripts/bench_plot.sh $(B)/bench-out
 
 bench-smoke: check-deps-test
 	$(MAKE) $(B)/bench

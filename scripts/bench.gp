@@ -1,14 +1,14 @@
 # Time (ns per box) versus max excess over the exact bound, one labelled
 # point per row of tests/bench.c.  Usage:
-#   gnuplot -e "datafile='build/bench/bench.dat'; outfile='build/bench/bench.png'" scripts/bench.gp
+#   gnuplot -e "datafile='build/bench-out/bench.dat'; outfile='build/bench-out/bench.png'" scripts/bench.gp
 # bench.dat (written by build/bench): one block per row, separated by two
 # blank lines; each block is a header line whose 6th field is the row's
 # title, then one line: row ns_per_box max_excess y_plotted proven label
 # (proven: 1 certbox, 0 unsound round-to-nearest baseline, 2 exact GMP;
 # y_plotted is the max excess floored at 0.01, so that the exact row shows
 # on the log scale).
-if (!exists("datafile")) datafile = "build/bench/bench.dat"
-if (!exists("outfile")) outfile = "build/bench/bench.png"
+if (!exists("datafile")) datafile = "build/bench-out/bench.dat"
+if (!exists("outfile")) outfile = "build/bench-out/bench.png"
 if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {
     set terminal pngcairo size 1200,900 font ",10" noenhanced
 } else {

@@ -4,7 +4,7 @@
 # result; the plot is a picture of it).  Install it with
 # `sh scripts/deps.sh bench` (Debian: gnuplot-nox).
 set -eu
-dir=${1:-build/bench}
+dir=${1:-build/bench-out}
 if ! command -v gnuplot >/dev/null 2>&1; then
   echo "bench: note: gnuplot not found, $dir/bench.png not drawn (install: sh scripts/deps.sh bench, as root)"
   exit 0

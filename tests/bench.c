@@ -7,7 +7,7 @@
  *   C   calls per run (200000)                  NE  exactly measured (20000)
  *   NG  cases of the GMP row (2000)             NC  in-cache throughput (1000)
  *   NB  large-array throughput (4000000; 0: no throughput rows)
- *   S   seed (20240501)                         DIR output (build/bench)
+ *   S   seed (20240501)                         DIR output (build/bench-out)
  * Prints one markdown table to stdout and writes DIR/bench.md (the same
  * table) and DIR/bench.dat (one block per plotted row, for scripts/bench.gp,
  * which scripts/bench_plot.sh runs).  Exit status 1 if a certbox row has a
@@ -622,7 +622,7 @@ int main(int argc, char **argv)
     long calls = 200000;
     int R = 11, i, cores;
     unsigned long seed = 20240501;
-    const char *dir = "build/bench";
+    const char *dir = "build/bench-out";
     bench_ctx b;
     xu_rng rng;
     size_t k;
