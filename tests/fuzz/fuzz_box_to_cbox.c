@@ -35,15 +35,6 @@ static void dump(FILE *f)
     fz_print_cbox(f, "out", &OUT);
 }
 
-static int in_conv_dom(double v) { return v >= -0x1p1019 && v <= 0x1p1019; }
-
-/* row j of the identity: y = x_j */
-static void unit_row(double m[4], int j)
-{
-    m[0] = m[1] = m[2] = m[3] = 0.0;
-    m[j] = 1.0;
-}
-
 static void check_input(fz_ctx *k)
 {
     fz_ival *iv = fz_ivals();
@@ -57,7 +48,7 @@ static void check_input(fz_ctx *k)
         return;
     }
     for (j = 0; j < 3; j++)
-        if (!in_conv_dom(IN.lo[j]) || !in_conv_dom(IN.hi[j])) oob |= 1 << j;
+        if (!fz_in_conv_dom(IN.lo[j]) || !fz_in_conv_dom(IN.hi[j])) oob |= 1 << j;
     fz_check_status(ST, oob ? CBX_ERANGE : CBX_OK);
     if (!fz_ivals_box(iv, IN.lo, IN.hi)) fz_fail("oracle: non-empty box read as empty");
     for (j = 0; j < 3; j++) {
@@ -69,7 +60,7 @@ static void check_input(fz_ctx *k)
         if (!isfinite(c) || !isfinite(h) || !(h >= 0))
             fz_fail("axis %d is in the domain but out c = %a, h = %a (not finite, h >= 0)",
                     j, c, h);
-        unit_row(m, j);
+        fz_unit_row(m, j);
         fz_oends_cbox(k, e, c, h);
         fz_check_corners(k, j, m, iv, e);
     }
@@ -84,7 +75,7 @@ static void check_infinite_input(fz_ctx *k)
     int j;
     if (!fz_ivals_box(iv, IN.lo, IN.hi)) return; /* empty real box */
     for (j = 0; j < 3; j++) {
-        unit_row(m, j);
+        fz_unit_row(m, j);
         fz_row_req(k, m, iv, &r[0], &r[1]);
         fz_oends_cbox(k, e, OUT.c[j], OUT.h[j]);
         fz_check_req(j, &r[0], &r[1], e);

@@ -33,14 +33,6 @@ static void dump(FILE *f)
     fz_print_box(f, "out", &OUT);
 }
 
-static int in_conv_dom(double v) { return v >= -0x1p1019 && v <= 0x1p1019; }
-
-static void unit_row(double m[4], int j)
-{
-    m[0] = m[1] = m[2] = m[3] = 0.0;
-    m[j] = 1.0;
-}
-
 static void check_finite_input(fz_ctx *k)
 {
     fz_ival *iv = fz_ivals();
@@ -54,7 +46,7 @@ static void check_finite_input(fz_ctx *k)
         return;
     }
     for (j = 0; j < 3; j++)
-        if (!in_conv_dom(IN.c[j]) || !in_conv_dom(IN.h[j])) oob |= 1 << j;
+        if (!fz_in_conv_dom(IN.c[j]) || !fz_in_conv_dom(IN.h[j])) oob |= 1 << j;
     fz_check_status(ST, oob ? CBX_ERANGE : CBX_OK);
     if (!fz_ivals_cbox(k, iv, IN.c, IN.h)) fz_fail("oracle: non-empty cbox read as empty");
     for (j = 0; j < 3; j++) {
@@ -67,7 +59,7 @@ static void check_finite_input(fz_ctx *k)
         if (!isfinite(lo) || !isfinite(hi) || lo > hi)
             fz_fail("axis %d is in the domain but out = [%a, %a] (not finite, ordered)",
                     j, lo, hi);
-        unit_row(m, j);
+        fz_unit_row(m, j);
         fz_oends_box(e, lo, hi);
         fz_check_corners(k, j, m, iv, e);
     }
@@ -82,7 +74,7 @@ static void check_infinite_input(fz_ctx *k)
     int j;
     if (!fz_ivals_cbox(k, iv, IN.c, IN.h)) return; /* no real point */
     for (j = 0; j < 3; j++) {
-        unit_row(m, j);
+        fz_unit_row(m, j);
         fz_row_req(k, m, iv, &r[0], &r[1]);
         fz_oends_box(e, OUT.lo[j], OUT.hi[j]);
         fz_check_req(j, &r[0], &r[1], e);

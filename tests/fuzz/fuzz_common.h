@@ -235,6 +235,16 @@ FZ_FN void fz_print_vec(FILE *f, const char *label, const double *v, int n)
 }
 
 #ifndef FZ_DECODE_ONLY
+/* |v| <= 2^1019: the conversions' domain (false for NaN and infinities). */
+FZ_FN int fz_in_conv_dom(double v) { return v >= -0x1p1019 && v <= 0x1p1019; }
+
+/* row j of the identity map: y = x_j */
+FZ_FN void fz_unit_row(double m[4], int j)
+{
+    m[0] = m[1] = m[2] = m[3] = 0.0;
+    m[j] = 1.0;
+}
+
 /* ---------------------------------------------------------------------- */
 /* The oracle                                                             */
 /* ---------------------------------------------------------------------- */

@@ -59,7 +59,7 @@ static void check_tight(fz_ctx *k, int i, const double m[4], const cbx_cbox *d,
 {
     static mpz_t C, H, S, g, tol;
     static int init;
-    int j;
+    int j, sg;
     if (!init) {
         mpz_inits(C, H, S, g, tol, (mpz_ptr)0);
         init = 1;
@@ -81,24 +81,23 @@ static void check_tight(fz_ctx *k, int i, const double m[4], const cbx_cbox *d,
     mpz_mul_2exp(tol, tol, FZ_SH2 - 1065 + 53);
     mpz_addmul_ui(tol, S, 12);
     mpz_neg(tol, tol);
-    /* lower: (oc - oh) - (C - H) */
-    xu_scaled_sh(g, oc, FZ_SH2);
-    xu_scaled_sh(k->w, oh, FZ_SH2);
-    mpz_sub(g, g, k->w);
-    mpz_sub(g, g, C);
-    mpz_add(g, g, H);
-    mpz_mul_2exp(g, g, 53);
-    if (mpz_cmp(g, tol) < 0)
-        fz_fail("axis %d: lower end beyond 12 u S' + 2^-1065 of the exact end (cbox_tight)", i);
-    /* upper: (C + H) - (oc + oh) */
-    xu_scaled_sh(g, oc, FZ_SH2);
-    xu_scaled_sh(k->w, oh, FZ_SH2);
-    mpz_add(g, g, k->w);
-    mpz_sub(g, C, g);
-    mpz_add(g, g, H);
-    mpz_mul_2exp(g, g, 53);
-    if (mpz_cmp(g, tol) < 0)
-        fz_fail("axis %d: upper end beyond 12 u S' + 2^-1065 of the exact end (cbox_tight)", i);
+    /* lower (sg = -1): (oc - oh) - (C - H);  upper (sg = +1): (C + H) - (oc + oh) */
+    for (sg = -1; sg <= 1; sg += 2) {
+        xu_scaled_sh(g, oc, FZ_SH2);
+        xu_scaled_sh(k->w, oh, FZ_SH2);
+        if (sg < 0) {
+            mpz_sub(g, g, k->w);
+            mpz_sub(g, g, C);
+        } else {
+            mpz_add(g, g, k->w);
+            mpz_sub(g, C, g);
+        }
+        mpz_add(g, g, H);
+        mpz_mul_2exp(g, g, 53);
+        if (mpz_cmp(g, tol) < 0)
+            fz_fail("axis %d: %s end beyond 12 u S' + 2^-1065 of the exact end (cbox_tight)", i,
+                    sg < 0 ? "lower" : "upper");
+    }
 }
 
 static void check_result(fz_ctx *k)
