@@ -5,3 +5,5 @@
 #include "cbx_convert.c"
 #include "cbx_status.c"
 #include "cbx_sphere.c"
+#include "cbx_batch.c"
+#include "cbx_tight.c"

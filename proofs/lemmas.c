@@ -2,3 +2,5 @@
  * (pass L of proofs/run.sh): this file has no function, so WP's goals are the lemmas. */
 #include "certbox.h"
 
+#include "cbx_eft.h"
+#include "cbx_tight.h"

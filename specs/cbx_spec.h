@@ -299,6 +299,52 @@
       axis_ok_s(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
                 b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
 
+    // ---- one box's whole promise on values, for the batch form -------
+    // Inputs: the 12 map entries a_ij, the box l_j, h_j; output: o_i, p_i
+    // (lo, hi of axis i).  The same cases as cbx_transform_box's behaviors.
+    predicate nan_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                    double l0, double h0, double l1, double h1, double l2, double h2) =
+         \is_NaN(a00) || \is_NaN(a01) || \is_NaN(a02) || \is_NaN(a03)
+      || \is_NaN(a10) || \is_NaN(a11) || \is_NaN(a12) || \is_NaN(a13)
+      || \is_NaN(a20) || \is_NaN(a21) || \is_NaN(a22) || \is_NaN(a23)
+      || \is_NaN(l0) || \is_NaN(l1) || \is_NaN(l2) || \is_NaN(h0) || \is_NaN(h1) || \is_NaN(h2);
+    predicate empty_v(double l0, double h0, double l1, double h1, double l2, double h2) =
+      no_point(l0, h0) || no_point(l1, h1) || no_point(l2, h2);
+    predicate ok_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                   double l0, double h0, double l1, double h1, double l2, double h2) =
+      axis_ok_s(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
+      && axis_ok_s(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
+      && axis_ok_s(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
+    predicate box_done_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                         double l0, double h0, double l1, double h1, double l2, double h2,
+                         double o0, double p0, double o1, double p1, double o2, double p2) =
+      (nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) ==>
+         (\is_minus_infinity(o0) && \is_plus_infinity(p0) && \is_minus_infinity(o1)
+          && \is_plus_infinity(p1) && \is_minus_infinity(o2) && \is_plus_infinity(p2)))
+      && ((!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && empty_v(l0, h0, l1, h1, l2, h2)) ==>
+         (\is_plus_infinity(o0) && \is_minus_infinity(p0) && \is_plus_infinity(o1)
+          && \is_minus_infinity(p1) && \is_plus_infinity(o2) && \is_minus_infinity(p2)))
+      && ((!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2)) ==>
+         (axis_sound_s(o0, p0, a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
+          && axis_sound_s(o1, p1, a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
+          && axis_sound_s(o2, p2, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)));
+
+    // Severity of a status, for "the most severe status met":
+    // CBX_OK 0 < CBX_EMPTY 1 < CBX_ERANGE 2 < CBX_EINVAL 3.
+    logic integer sev(integer s) =
+      s == CBX_EINVAL ? 3 : (s == CBX_ERANGE ? 2 : (s == CBX_EMPTY ? 1 : 0));
+
+    // k is the severity of the status cbx_transform_box returns.
+    predicate box_sev_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                        double l0, double h0, double l1, double h1, double l2, double h2, integer k) =
+      (nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 3)
+      || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && empty_v(l0, h0, l1, h1, l2, h2) && k == 1)
+      || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2) && ok_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 0)
+      || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2) && !ok_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 2);
+
+    lemma box_sev_v_fun: \forall double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                             double l0, double h0, double l1, double h1, double l2, double h2, integer k1, k2;
+      box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2, k1) && box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2, k2) ==> k1 == k2;
 */
 
 /*@ // ---------------------------------------------------------------------
@@ -446,5 +492,14 @@
       && (!(\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
           whole_axis(out, i));
 */
+
+/* Argument lists of the value predicates above, read at label L. */
+#define CBX_AV(a, L) \
+  \at((a)->m[0][0], L), \at((a)->m[0][1], L), \at((a)->m[0][2], L), \at((a)->m[0][3], L), \
+  \at((a)->m[1][0], L), \at((a)->m[1][1], L), \at((a)->m[1][2], L), \at((a)->m[1][3], L), \
+  \at((a)->m[2][0], L), \at((a)->m[2][1], L), \at((a)->m[2][2], L), \at((a)->m[2][3], L)
+#define CBX_BV(b, L) \
+  \at((b)->lo[0], L), \at((b)->hi[0], L), \at((b)->lo[1], L), \at((b)->hi[1], L), \
+  \at((b)->lo[2], L), \at((b)->hi[2], L)
 
 #endif /* CBX_SPEC_H */

@@ -13,6 +13,7 @@
 #include "certbox.h"
 #include "cbx_round.h"
 #include "cbx_domain.h"
+#include "cbx_vertex.h"
 
 /* The smaller of m*l and m*h: error u*tmag + eta (one rounding each). */
 /*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
@@ -189,101 +190,6 @@ static void set_empty(cbx_box *out)
  * and the end is -inf, exactly; otherwise the proven kernel runs on the
  * point box v and the per-column facts of vertex_lo / vertex_hi carry its
  * bound from the vertex to every real point of the box (ext_below). */
-typedef struct end_result { double v; int ok; } end_result;
-
-/* Lemma functions (empty bodies, no code): their contracts state the sign
- * step of one column, m*v <= m*p or >= for every point p of [l, h], in the
- * form nn_prod(a, b) (0 <= a*b) with a, b >= 0 that the lemma mul_nonneg
- * covers (the provers' nonlinear arithmetic alone is not reliable on
- * m*v <= m*p); vertex_lo / vertex_hi call them. */
-/*@ requires \is_finite(m) && \is_finite(l) && m > 0;
-    assigns \nothing;
-    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(m, p - l);
-*/
-static void pos_below(double m, double l, double h) { (void)m; (void)l; (void)h; }
-
-/*@ requires \is_finite(m) && \is_finite(h) && m < 0;
-    assigns \nothing;
-    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(-m, h - p);
-*/
-static void neg_below(double m, double l, double h) { (void)m; (void)l; (void)h; }
-
-/*@ requires \is_finite(m) && \is_finite(h) && m > 0;
-    assigns \nothing;
-    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(m, h - p);
-*/
-static void pos_above(double m, double l, double h) { (void)m; (void)l; (void)h; }
-
-/*@ requires \is_finite(m) && \is_finite(l) && m < 0;
-    assigns \nothing;
-    ensures \forall real p; ext_in(p, l, h) ==> nn_prod(-m, p - l);
-*/
-static void neg_above(double m, double l, double h) { (void)m; (void)l; (void)h; }
-
-/* The vertex of [l, h] where m*x is least; ok == 0: m*x unbounded below. */
-/*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
-    assigns \nothing;
-    ensures unb: \result.ok == 0 <==> unb_lo(m, l, h);
-    ensures v: \result.ok != 0 ==> \is_finite(\result.v) && \result.v == vlo(m, l, h);
-    ensures sel: \result.ok != 0 ==> sel_lo(m, \result.v, l, h);
-    ensures col: \result.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m * \result.v <= m * p;
-*/
-static end_result vertex_lo(double m, double l, double h)
-{
-    end_result r;
-    if (m > 0.0) {
-        /*@ assert sg: m > 0; */
-        r.v = l;
-        r.ok = cbx_is_fin(l);
-        if (r.ok) pos_below(m, l, h);
-        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l <= m*p; */
-    } else if (m < 0.0) {
-        /*@ assert sg: m < 0; */
-        r.v = h;
-        r.ok = cbx_is_fin(h);
-        if (r.ok) neg_below(m, l, h);
-        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h <= m*p; */
-    } else {
-        /*@ assert sg: m == 0; */
-        /*@ assert z: \forall real p; m*0 == m*p; */
-        r.v = 0.0;
-        r.ok = 1;
-    }
-    return r;
-}
-
-/* The vertex of [l, h] where m*x is greatest; ok == 0: unbounded above. */
-/*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
-    assigns \nothing;
-    ensures unb: \result.ok == 0 <==> unb_hi(m, l, h);
-    ensures v: \result.ok != 0 ==> \is_finite(\result.v) && \result.v == vhi(m, l, h);
-    ensures sel: \result.ok != 0 ==> sel_hi(m, \result.v, l, h);
-    ensures col: \result.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m * \result.v >= m * p;
-*/
-static end_result vertex_hi(double m, double l, double h)
-{
-    end_result r;
-    if (m > 0.0) {
-        /*@ assert sg: m > 0; */
-        r.v = h;
-        r.ok = cbx_is_fin(h);
-        if (r.ok) pos_above(m, l, h);
-        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h >= m*p; */
-    } else if (m < 0.0) {
-        /*@ assert sg: m < 0; */
-        r.v = l;
-        r.ok = cbx_is_fin(l);
-        if (r.ok) neg_above(m, l, h);
-        /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l >= m*p; */
-    } else {
-        /*@ assert sg: m == 0; */
-        /*@ assert z: \forall real p; m*0 == m*p; */
-        r.v = 0.0;
-        r.ok = 1;
-    }
-    return r;
-}
-
 /* The kernels on the point box v (every l_j == h_j == v_j). */
 /*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
     requires dom: row_in_dom(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);

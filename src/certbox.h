@@ -35,6 +35,8 @@
 #ifndef CERTBOX_H
 #define CERTBOX_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -109,6 +111,72 @@ typedef enum cbx_status {
     disjoint behaviors;
 */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out);
+
+
+/* Tight mode: the same status, special cases and infinite ends as
+ * cbx_transform_box, and every finite end the tightest double: lo = the
+ * exact lower end rounded down, hi = the exact upper end rounded up.
+ * Proven: the same statement as cbx_transform_box (containment of the
+ * exact image for every real point, the tightness bound), given the
+ * exactness of two_sum and two_prod (trusted, proofs/README.md).
+ * Optimality is checked against GMP on every test case.  Ends where a
+ * nonzero product m_ij v_j is below 2^-968 in magnitude, or |t|, a product or
+ * the exact end is above 2^1015, keep cbx_transform_box's end (sound, maybe not the
+ * tightest).  About 20 to 40 times slower than cbx_transform_box. */
+/*@ requires valid_a:   \valid_read(a);
+    requires valid_in:  \valid_read(in);
+    requires valid_out: \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+
+    behavior nan_input:
+      assumes has_nan(a, in);
+      ensures \result == CBX_EINVAL;
+      ensures whole_space(out);
+    behavior empty_input:
+      assumes !has_nan(a, in) && is_empty(in);
+      ensures \result == CBX_EMPTY;
+      ensures empty_out(out);
+    behavior box_input:
+      assumes !has_nan(a, in) && !is_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: axis_sound_s(out->lo[0], out->hi[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre), \at(a->m[0][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis1: axis_sound_s(out->lo[1], out->hi[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre), \at(a->m[1][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis2: axis_sound_s(out->lo[2], out->hi[2],
+        \at(a->m[2][0], Pre), \at(a->m[2][1], Pre), \at(a->m[2][2], Pre), \at(a->m[2][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures ok_iff: \result == CBX_OK <==>
+        \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out);
+
+/* Batch form: out[k] = the box of in[k] under *a, for k = 0 .. n-1, each with
+ * exactly cbx_transform_box's output and promise (proven for every k).
+ * Returns the most severe status met (CBX_EINVAL, then CBX_ERANGE, then
+ * CBX_EMPTY, then CBX_OK; CBX_OK when n == 0).  Every out[k] is written.
+ * The arrays in and out may not overlap, and out may not overlap *a. */
+/*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
+    requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
+    assigns out[0 .. n - 1];
+    ensures done: \forall integer k; 0 <= k < n ==>
+      box_done_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), CBX_BV(out + k, Here));
+    ensures worst: \forall integer k, s; 0 <= k < n ==>
+      box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), s) ==> s <= sev(\result);
+    ensures met: n > 0 ==> \exists integer k; 0 <= k < n &&
+      box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
+    ensures none: n == 0 ==> \result == CBX_OK;
+    ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
+*/
+cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t n);
 
 /* ---- center/half-diagonal form (Arvo's Fig. 2) -------------------------
  * A cbx_cbox means the exact real box [c - h, c + h] (per axis); h >= 0.

@@ -11,7 +11,8 @@
  * Prints one markdown table to stdout and writes DIR/bench.md (the same
  * table) and DIR/bench.dat (one block per plotted row, for scripts/bench.gp,
  * which scripts/bench_plot.sh runs).  Exit status 1 if a certbox row has a
- * containment failure or a call that does not return CBX_OK.
+ * containment failure, a call that does not return CBX_OK, or a batch
+ * output (row 3b) that is not bit-identical to the loop of single calls.
  *   make bench        -n 20000 -r 11 -calls 200000 -exact 20000 -gmp 2000
  *                     -cache 1000 -big 4000000 (about 1.5 GB of memory)
  *   make bench-smoke  -n 2000 -r 5 -calls 20000 -exact 2000 -gmp 200
@@ -29,6 +30,15 @@
  *   2  classic Arvo interval form, RN (cglm, Godot): ref_arvo_box; the
  *      baseline of the "vs row 2" column.  Unsound (no widening).
  *   3  certbox cbx_transform_box (interval form, outward, proven).
+ *   3t certbox tight: cbx_transform_box_tight (every finite end the
+ *      tightest double, RD / RU of the exact end); its notes give, exactly
+ *      (GMP, MPFR), how many ends are not the tightest double and by how
+ *      many ulps (should be 0).
+ *   3b certbox batch: cbx_transform_boxes(&a[0], in, out, N), one call over
+ *      the same N boxes, all under the first map (the batch form takes one
+ *      map); excess measured against that map; the notes give a loop of
+ *      cbx_transform_box over the same boxes and map (untabled timing) and
+ *      check that the batch output is bit-identical to it.
  *   4  certbox cbx_transform_cbox; its inputs are converted with
  *      cbx_box_to_cbox (outward) before the timed loops.
  *   5  classic Arvo center/half form, RN: ref_arvo_cbox on inputs converted
@@ -45,6 +55,9 @@
  *      printed in the header; 192 bytes per case: map 96, box in 48,
  *      box out 48); the same cases' map and box arrays and a memcpy of the
  *      same number of bytes (in + out) are timed in the same run.
+ *   T1b, T2b the same boxes through cbx_transform_boxes under one map (the
+ *      first case's): 96 bytes per case (box in 48, box out 48), against a
+ *      memcpy of those bytes.
  *
  * Timing: clock_gettime(CLOCK_MONOTONIC) around one run; a run is P passes
  * over the whole array (P = max(1, C / N): a run makes about C calls, so
@@ -147,6 +160,7 @@ typedef struct bench_ctx {
     cbx_box *in;
     cbx_cbox *cin_cbx, *cin_rn;
     cbx_box *o_naive, *o_arvo, *o_cbx, *o_sph, *o_sphbox;
+    cbx_box *o_tight, *o_batch, *o_cbx1;  /* rows 3t, 3b and 3b's loop    */
     cbx_cbox *co_cbx, *co_rn;
     long bad;               /* certbox calls that did not return CBX_OK  */
     xu_exact x;
@@ -227,6 +241,26 @@ static void k_cbx(bench_ctx *b, size_t n)
     for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[i], &b->in[i], &b->o_cbx[i]) != CBX_OK;
     b->bad += bad;
 }
+static void k_tight(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++)
+        bad += cbx_transform_box_tight(&b->a[i], &b->in[i], &b->o_tight[i]) != CBX_OK;
+    b->bad += bad;
+}
+/* one map (the first case's) for the whole array: the batch form */
+static void k_batch(bench_ctx *b, size_t n)
+{
+    b->bad += cbx_transform_boxes(&b->a[0], b->in, b->o_batch, n) != CBX_OK;
+}
+static void k_cbx1(bench_ctx *b, size_t n)
+{
+    size_t i;
+    long bad = 0;
+    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[0], &b->in[i], &b->o_cbx1[i]) != CBX_OK;
+    b->bad += bad;
+}
 static void k_cbxc(bench_ctx *b, size_t n)
 {
     size_t i;
@@ -272,6 +306,16 @@ static void k_tp(bench_ctx *b, size_t n)
     long bad = 0;
     for (i = 0; i < n; i++) bad += cbx_transform_box(&b->ta[i], &b->tin[i], &b->tout[i]) != CBX_OK;
     b->bad += bad;
+}
+static void k_tp_batch(bench_ctx *b, size_t n)
+{
+    b->bad += cbx_transform_boxes(&b->ta[0], b->tin, b->tout, n) != CBX_OK;
+}
+static void k_memcpy_boxes(bench_ctx *b, size_t n)
+{
+    size_t nb = n * sizeof(cbx_box);
+    memcpy(b->mdst, b->tin, nb);
+    memcpy(b->mdst + nb, b->tout, nb);
 }
 static void k_memcpy(bench_ctx *b, size_t n)
 {
@@ -409,6 +453,54 @@ static void record_box(xu_exact *x, ex_scratch *e, acc *s, double lo, double hi)
     xu_scaled_d(x, e->v, hi);
     mpz_sub(e->gap, e->v, x->H);
     record_end(x, e, s, x->H, x->S);
+}
+
+/* Distance, in doubles, of a finite end d from the tightest double: RD(E)
+ * for a lower end, RU(E) for an upper one (E scaled by 2^XU_SHIFT), by
+ * MPFR in binary64 (subnormals included); 0 = the tightest double. */
+static double tightest_d(const mpz_t E, int up)
+{
+    mpfr_exp_t emin = mpfr_get_emin(), emax = mpfr_get_emax();
+    mpfr_rnd_t rnd = up ? MPFR_RNDU : MPFR_RNDD;
+    mpfr_t r;
+    double d;
+    int inex;
+    mpfr_init2(r, 53);
+    mpfr_set_emin(-1073);
+    mpfr_set_emax(1024);
+    inex = mpfr_set_z_2exp(r, E, -(mpfr_exp_t)XU_SHIFT, rnd);
+    inex = mpfr_subnormalize(r, inex, rnd);
+    (void)inex;
+    d = mpfr_get_d(r, rnd);
+    mpfr_set_emin(emin);
+    mpfr_set_emax(emax);
+    mpfr_clear(r);
+    return d;
+}
+
+static int64_t ord_d(double d)
+{
+    int64_t w;
+    memcpy(&w, &d, sizeof w);
+    return w < 0 ? -(w & INT64_MAX) : w;
+}
+
+typedef struct opt_acc { long ends, off; double max_off, sum_off; } opt_acc;
+
+/* How far lo and hi of a box output are from RD(L) and RU(H) (the last
+ * xu_row_bounds), in doubles. */
+static void record_opt(xu_exact *x, opt_acc *o, double lo, double hi)
+{
+    int e;
+    for (e = 0; e < 2; e++) {
+        double d = e ? hi : lo, t = tightest_d(e ? x->H : x->L, e);
+        int64_t k = ord_d(d) - ord_d(t);
+        double off = (double)(k < 0 ? -k : k);
+        o->ends++;
+        o->sum_off += off;
+        if (off > 0) o->off++;
+        if (off > o->max_off) o->max_off = off;
+    }
 }
 
 /* A center/half output: the real box [c - h, c + h], exactly. */
@@ -627,9 +719,11 @@ int main(int argc, char **argv)
     xu_rng rng;
     size_t k;
     char model[256], path[1200], loadavg[128] = "(unknown)";
-    row rows[12];
+    row rows[20];
     int nrows = 0;
-    acc ex_box[5], ex_sph, ex_sphbox;
+    acc ex_box[7], ex_sph, ex_sphbox;   /* ex_box[5] tight, [6] batch */
+    opt_acc opt_tight, opt_cbx;
+    long batch_diff = 0;
     double volratio = 0.0;
     double ns_arvo;
     long bad_timed, conv_bad;
@@ -669,6 +763,9 @@ int main(int argc, char **argv)
     b.o_cbx = xmalloc(n * sizeof(cbx_box));
     b.o_sph = xmalloc(n * sizeof(cbx_box));
     b.o_sphbox = xmalloc(n * sizeof(cbx_box));
+    b.o_tight = xmalloc(n * sizeof(cbx_box));
+    b.o_batch = xmalloc(n * sizeof(cbx_box));
+    b.o_cbx1 = xmalloc(n * sizeof(cbx_box));
     b.co_cbx = xmalloc(n * sizeof(cbx_cbox));
     b.co_rn = xmalloc(n * sizeof(cbx_cbox));
     rng.s = seed;
@@ -694,12 +791,19 @@ int main(int argc, char **argv)
     {
         long P = passes_for(calls, n);
         double t_naive, t_arvo, t_cbx, t_cbxc, t_arvoc, t_sph, t_sphbox, t_gmp;
+        double t_tight, t_batch, t_cbx1;
         double t_tc = -1, t_mc = -1, t_tb = -1, t_mb = -1;
+        double t_tcb = -1, t_mcb = -1, t_tbb = -1, t_mbb = -1;
         double c_naive, c_arvo, c_cbx, c_cbxc, c_arvoc, c_sph, c_sphbox, c_gmp;
+        double c_tight, c_batch, c_cbx1;
         double c_tc = -1, c_mc = -1, c_tb = -1, c_mb = -1;
+        double c_tcb = -1, c_mcb = -1, c_tbb = -1, c_mbb = -1;
         t_naive = time_kernel(&b, k_naive, n, P, R, b.o_naive, n * sizeof(cbx_box), &c_naive);
         t_arvo = time_kernel(&b, k_arvo, n, P, R, b.o_arvo, n * sizeof(cbx_box), &c_arvo);
         t_cbx = time_kernel(&b, k_cbx, n, P, R, b.o_cbx, n * sizeof(cbx_box), &c_cbx);
+        t_tight = time_kernel(&b, k_tight, n, P, R, b.o_tight, n * sizeof(cbx_box), &c_tight);
+        t_batch = time_kernel(&b, k_batch, n, P, R, b.o_batch, n * sizeof(cbx_box), &c_batch);
+        t_cbx1 = time_kernel(&b, k_cbx1, n, P, R, b.o_cbx1, n * sizeof(cbx_box), &c_cbx1);
         t_cbxc = time_kernel(&b, k_cbxc, n, P, R, b.co_cbx, n * sizeof(cbx_cbox), &c_cbxc);
         t_arvoc = time_kernel(&b, k_arvoc, n, P, R, b.co_rn, n * sizeof(cbx_cbox), &c_arvoc);
         t_sph = time_kernel(&b, k_sph, n, P, R, b.o_sph, n * sizeof(cbx_box), &c_sph);
@@ -712,6 +816,10 @@ int main(int argc, char **argv)
             t_mc = time_kernel(&b, k_memcpy, nc, Pc, R, b.mdst, nc * pb, &c_mc);
             t_tb = time_kernel(&b, k_tp, nb, Pb, R, b.tout, nb * sizeof(cbx_box), &c_tb);
             t_mb = time_kernel(&b, k_memcpy, nb, Pb, R, b.mdst, nb * pb, &c_mb);
+            t_tcb = time_kernel(&b, k_tp_batch, nc, Pc, R, b.tout, nc * sizeof(cbx_box), &c_tcb);
+            t_mcb = time_kernel(&b, k_memcpy_boxes, nc, Pc, R, b.mdst, nc * 2 * sizeof(cbx_box), &c_mcb);
+            t_tbb = time_kernel(&b, k_tp_batch, nb, Pb, R, b.tout, nb * sizeof(cbx_box), &c_tbb);
+            t_mbb = time_kernel(&b, k_memcpy_boxes, nb, Pb, R, b.mdst, nb * 2 * sizeof(cbx_box), &c_mbb);
         }
         bad_timed = b.bad;
         ns_arvo = t_arvo;
@@ -721,7 +829,9 @@ int main(int argc, char **argv)
             ex_scratch e;
             int r;
             mpz_inits(e.gap, e.v, e.w, e.t, (mpz_ptr)0);
-            for (i = 0; i < 5; i++) acc_init(&ex_box[i]);
+            for (i = 0; i < 7; i++) acc_init(&ex_box[i]);
+            memset(&opt_tight, 0, sizeof opt_tight);
+            memset(&opt_cbx, 0, sizeof opt_cbx);
             for (k = 0; k < ne; k++)
                 for (r = 0; r < 3; r++) {
                     xu_row_bounds(&b.x, &b.a[k], &b.in[k], r);
@@ -730,7 +840,16 @@ int main(int argc, char **argv)
                     record_box(&b.x, &e, &ex_box[2], b.o_cbx[k].lo[r], b.o_cbx[k].hi[r]);
                     record_cbox(&b.x, &e, &ex_box[3], b.co_cbx[k].c[r], b.co_cbx[k].h[r]);
                     record_cbox(&b.x, &e, &ex_box[4], b.co_rn[k].c[r], b.co_rn[k].h[r]);
+                    record_box(&b.x, &e, &ex_box[5], b.o_tight[k].lo[r], b.o_tight[k].hi[r]);
+                    if (isfinite(b.o_tight[k].lo[r]) && isfinite(b.o_tight[k].hi[r]))
+                        record_opt(&b.x, &opt_tight, b.o_tight[k].lo[r], b.o_tight[k].hi[r]);
+                    record_opt(&b.x, &opt_cbx, b.o_cbx[k].lo[r], b.o_cbx[k].hi[r]);
+                    /* the batch row: the first map for every box */
+                    xu_row_bounds(&b.x, &b.a[0], &b.in[k], r);
+                    record_box(&b.x, &e, &ex_box[6], b.o_batch[k].lo[r], b.o_batch[k].hi[r]);
                 }
+            for (k = 0; k < n; k++) /* bit-identical to the loop of row 3b's note */
+                batch_diff += memcmp(&b.o_batch[k], &b.o_cbx1[k], sizeof(cbx_box)) != 0;
             mpz_clears(e.gap, e.v, e.w, e.t, (mpz_ptr)0);
             acc_init(&ex_sph);
             acc_init(&ex_sphbox);
@@ -745,6 +864,24 @@ int main(int argc, char **argv)
         ADDROW("1", "naive 8 corners, RN (pbrt, Embree)", naive, &ex_box[0], "no", 0);
         ADDROW("2", "Arvo interval, RN (cglm, Godot)", arvo, &ex_box[1], "no", 0);
         ADDROW("3", "certbox `cbx_transform_box`", cbx, &ex_box[2], "yes", 1);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "%ld of %ld ends not the tightest double: max %.0f, mean %.2f doubles away",
+                 opt_cbx.off, opt_cbx.ends, opt_cbx.max_off,
+                 opt_cbx.ends ? opt_cbx.sum_off / (double)opt_cbx.ends : 0.0);
+        ADDROW("3t", "certbox tight `cbx_transform_box_tight`", tight, &ex_box[5], "yes (EFTs trusted)", 1);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "%s%ld of %ld ends not the tightest double (RD/RU of the exact end): max %.0f, "
+                 "mean %.2f ulps beyond it", opt_tight.off ? "**" : "", opt_tight.off,
+                 opt_tight.ends, opt_tight.max_off,
+                 opt_tight.ends ? opt_tight.sum_off / (double)opt_tight.ends : 0.0);
+        if (opt_tight.off) strcat(rows[nrows - 1].note, "**");
+        ADDROW("3b", "certbox batch `cbx_transform_boxes`", batch, &ex_box[6], "per box (loop: no)", 0);
+        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                 "one call over the %lu boxes, all under the first map; a loop of "
+                 "`cbx_transform_box` over the same boxes and map: %.2f ns/box; output %s",
+                 (unsigned long)n, t_cbx1,
+                 batch_diff ? "DIFFERS from that loop's" : "bit-identical to that loop's");
+        (void)c_cbx1;
         ADDROW("4", "certbox `cbx_transform_cbox`", cbxc, &ex_box[3], "yes", 1);
         snprintf(rows[nrows - 1].note, sizeof rows[0].note,
                  "input from `cbx_box_to_cbox` (untimed); excess against the original box, "
@@ -778,6 +915,24 @@ int main(int argc, char **argv)
                      "%lu cases, %.0f MB in+out (out of cache if above L3); memcpy %.2f ns/case (%.1f GB/s)",
                      (unsigned long)nb, (double)(nb * pb) / 1e6, t_mb, (double)pb / t_mb);
             (void)c_mb;
+            ADDROW("T1b", "throughput `cbx_transform_boxes`, in cache", tcb, (const acc *)0, "per box (loop: no)", 0);
+            rows[nrows - 1].plot = 0;
+            rows[nrows - 1].vs_memcpy = t_tcb / t_mcb;
+            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                     "one call over the T1 boxes under one map; %lu cases, %.0f KB in+out; "
+                     "memcpy %.2f ns/case (%.1f GB/s)", (unsigned long)nc,
+                     (double)(nc * 2 * sizeof(cbx_box)) / 1e3, t_mcb,
+                     (double)(2 * sizeof(cbx_box)) / t_mcb);
+            (void)c_mcb;
+            ADDROW("T2b", "throughput `cbx_transform_boxes`, large array", tbb, (const acc *)0, "per box (loop: no)", 0);
+            rows[nrows - 1].plot = 0;
+            rows[nrows - 1].vs_memcpy = t_tbb / t_mbb;
+            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
+                     "one call over the T2 boxes under one map; %lu cases, %.0f MB in+out; "
+                     "memcpy %.2f ns/case (%.1f GB/s)", (unsigned long)nb,
+                     (double)(nb * 2 * sizeof(cbx_box)) / 1e6, t_mbb,
+                     (double)(2 * sizeof(cbx_box)) / t_mbb);
+            (void)c_mbb;
         }
 #undef ADDROW
 
@@ -909,10 +1064,12 @@ int main(int argc, char **argv)
     }
     xu_clear(&b.x);
     {
-        long fails = ex_box[2].fails + ex_box[3].fails + ex_sph.fails + ex_sphbox.fails;
-        if (fails || bad_timed || conv_bad) {
+        long fails = ex_box[2].fails + ex_box[3].fails + ex_sph.fails + ex_sphbox.fails
+                     + ex_box[5].fails + ex_box[6].fails;
+        if (fails || bad_timed || conv_bad || batch_diff) {
             fprintf(stderr, "bench: FAILED: %ld containment failures in certbox rows, "
-                            "%ld calls not CBX_OK\n", fails, bad_timed);
+                            "%ld calls not CBX_OK, %ld batch outputs not bit-identical\n",
+                    fails, bad_timed, batch_diff);
             return 1;
         }
     }

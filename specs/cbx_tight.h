@@ -1,0 +1,15 @@
+/*
+ * ACSL logic of the tight mode (src/cbx_tight.c): a vector of eight
+ * doubles whose exact real sum is what the certification tracks.
+ */
+#ifndef CBX_TIGHT_SPEC_H
+#define CBX_TIGHT_SPEC_H
+
+/*@ predicate vfin(cbx_vec8 z) =
+      \is_finite(z.v0) && \is_finite(z.v1) && \is_finite(z.v2) && \is_finite(z.v3)
+      && \is_finite(z.v4) && \is_finite(z.v5) && \is_finite(z.v6) && \is_finite(z.v7);
+    logic real vsum(cbx_vec8 z) = z.v0 + z.v1 + z.v2 + z.v3 + z.v4 + z.v5 + z.v6 + z.v7;
+
+*/
+
+#endif /* CBX_TIGHT_SPEC_H */

@@ -1,0 +1,373 @@
+/*
+ * Tight mode: the smallest double box that contains the exact image.
+ *
+ * The proven interval transform (cbx_transform_box) runs first: its status,
+ * special cases and infinite ends are kept.  Each finite end is then
+ * tightened at its vertex v (the point of the box where the end is reached):
+ * the exact end is E = t + m0 v0 + m1 v1 + m2 v2, a sum of seven doubles
+ * once each product is split exactly (two_prod).  A candidate c (the last
+ * term after three distillation passes, then its neighbours) replaces the
+ * end only when a certificate shows c <= E (c >= E for an upper end):
+ * the certificate distils the eight terms (E's seven, and -c) with two_sum,
+ * which keeps their exact sum, until the largest term decides the sign.
+ * So containment rests on the proven kernel and on the exactness of
+ * two_sum / two_prod (src/cbx_eft.h); optimality (c = RD(E)) is what the
+ * GMP tests check on every case.  When the certificate cannot decide (some
+ * nonzero product below 2^-968, magnitudes above 2^1015) the kernel's end
+ * stays: sound, within its proven bound.
+ */
+#include "certbox.h"
+#include "cbx_round.h"
+#include "cbx_domain.h"
+#include "cbx_vertex.h"
+#include "cbx_eft.h"
+
+#ifdef __FRAMAC__
+#include "cbx_tight.h"
+#endif
+
+/* two_sum where its range allows, else the pair unchanged (same sum). */
+/*@ requires fin: \is_finite(a) && \is_finite(b);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.hi) && \is_finite(\result.lo);
+    ensures exact: \result.hi + \result.lo == a + b;
+*/
+static cbx_dd eft_sum(double a, double b)
+{
+    cbx_dd r;
+    if (a >= -0x1p1019 && a <= 0x1p1019 && b >= -0x1p1019 && b <= 0x1p1019)
+        return cbx_two_sum(a, b);
+    r.hi = a;
+    r.lo = b;
+    return r;
+}
+
+/* One distillation pass (Ogita, Rump, Oishi's VecSum): the running sum
+ * moves to v7, the rounding errors stay behind; the exact sum is kept. */
+/*@ requires fin: vfin(z);
+    assigns \nothing;
+    ensures fin: vfin(\result);
+    ensures sum: vsum(\result) == vsum(z);
+*/
+static cbx_vec8 pass8(cbx_vec8 z)
+{
+    cbx_vec8 r;
+    cbx_dd d1 = eft_sum(z.v1, z.v0);
+    cbx_dd d2 = eft_sum(z.v2, d1.hi);
+    cbx_dd d3 = eft_sum(z.v3, d2.hi);
+    cbx_dd d4 = eft_sum(z.v4, d3.hi);
+    cbx_dd d5 = eft_sum(z.v5, d4.hi);
+    cbx_dd d6 = eft_sum(z.v6, d5.hi);
+    cbx_dd d7 = eft_sum(z.v7, d6.hi);
+    r.v0 = d1.lo; r.v1 = d2.lo; r.v2 = d3.lo; r.v3 = d4.lo;
+    r.v4 = d5.lo; r.v5 = d6.lo; r.v6 = d7.lo; r.v7 = d7.hi;
+    return r;
+}
+
+/* Sign of the exact sum when v7 dominates: 1 proves vsum(z) >= 0,
+ * -1 says it is negative, 0 undecided. */
+/*@ requires fin: vfin(z);
+    assigns \nothing;
+    ensures pos: \result > 0 ==> vsum(z) >= 0;
+*/
+static int decide(cbx_vec8 z)
+{
+    if (z.v0 == 0.0 && z.v1 == 0.0 && z.v2 == 0.0 && z.v3 == 0.0 && z.v4 == 0.0
+        && z.v5 == 0.0 && z.v6 == 0.0)
+        return z.v7 >= 0.0 ? 1 : -1;
+    double s = cbx_abs(z.v7);
+    if (!(s >= 0x1p-1060 && s <= 0x1p1020))
+        return 0;
+    double p = cbx_mul_rn(s, 0x1p-4);
+    /*@ assert pb: p <= s * 0x1p-4 + 0x1p-57 * s + 0x1p-1074; */
+    if (cbx_abs(z.v0) <= p && cbx_abs(z.v1) <= p && cbx_abs(z.v2) <= p && cbx_abs(z.v3) <= p
+        && cbx_abs(z.v4) <= p && cbx_abs(z.v5) <= p && cbx_abs(z.v6) <= p)
+        return z.v7 > 0.0 ? 1 : -1;
+    return 0;
+}
+
+/* 1 only if c <= the exact sum of y (y.v7 == 0). */
+/*@ requires fin: vfin(y) && \is_finite(c) && -0x1p1018 <= c <= 0x1p1018;
+    requires free: y.v7 == 0;
+    assigns \nothing;
+    ensures ok: \result != 0 ==> c <= vsum(y);
+*/
+static int certify(cbx_vec8 y, double c)
+{
+    cbx_vec8 z = y;
+    int i;
+    z.v7 = -c;
+    /*@ assert z0: vsum(z) == vsum(y) - c; */
+    /*@ loop invariant rng: 0 <= i <= 6;
+        loop invariant fin: vfin(z);
+        loop invariant sum: vsum(z) == vsum(y) - c;
+        loop assigns i, z;
+        loop variant 6 - i;
+    */
+    for (i = 0; i < 6; i++) {
+        int d = decide(z);
+        if (d != 0)
+            return d > 0;
+        z = pass8(z);
+    }
+    return decide(z) > 0;
+}
+
+/* A candidate for the rounded sum: the distilled running sum. */
+/*@ requires fin: vfin(y);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+*/
+static double approx(cbx_vec8 y)
+{
+    cbx_vec8 z = pass8(pass8(pass8(y)));
+    return z.v7;
+}
+
+/* The next double above c, or below (dn): c +- (RN(phi |c|) + eta) with
+ * phi = u (1 + 2u) (Rump, Zimmermann, Boldo, Melquiond, BIT 2009).  Only
+ * a candidate: the certificate decides. */
+/*@ requires fin: \is_finite(c) && -0x1p1017 <= c <= 0x1p1017;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+*/
+static double neighbour(double c, int dn)
+{
+    double e = cbx_mul_rn(cbx_abs(c), 0x1.0000000000001p-53);
+    double f = cbx_add_rn(e, 0x1p-1074);
+    return dn ? cbx_sub_rn(c, f) : cbx_add_rn(c, f);
+}
+
+/* two_prod's domain: the product is 0 or its error term is a double. */
+/*@ requires fin: \is_finite(m) && \is_finite(v) && in_dom(m, v);
+    assigns \nothing;
+    ensures ok: \result != 0 ==> (m*v == 0 || m*v >= 0x1p-969 || m*v <= -0x1p-969);
+*/
+static int eft_ok(double m, double v)
+{
+    if (m == 0.0 || v == 0.0)
+        return 1;
+    double p = cbx_mul_rn(m, v);
+    return cbx_abs(p) >= 0x1p-968;
+}
+
+/* The largest certified double <= vsum(y), or r when none beats r. */
+/*@ requires fin: vfin(y) && \is_finite(r);
+    requires free: y.v7 == 0;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures same_or_better: \result == r || (r < \result && \result <= vsum(y));
+*/
+static double tighten_core(double r, cbx_vec8 y)
+{
+    double best = r;
+    double c = approx(y);
+    if (!(c >= -0x1p1017 && c <= 0x1p1017))
+        return r;
+    if (certify(y, c)) {
+        if (c > best) best = c;
+        double u = neighbour(c, 0);
+        if (u >= -0x1p1018 && u <= 0x1p1018 && u > best && certify(y, u))
+            best = u;
+    } else {
+        double d = neighbour(c, 1);
+        if (d >= -0x1p1018 && d <= 0x1p1018 && d > best && certify(y, d))
+            best = d;
+    }
+    return best;
+}
+
+/* The seven exact terms of t + m.v, negated when neg != 0; ok == 0 when a
+ * product is outside two_prod's domain. */
+typedef struct terms { cbx_vec8 y; int ok; } terms;
+
+/*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
+    requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2) && -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \result.ok != 0 ==> (vfin(\result.y) && \result.y.v7 == 0);
+    ensures pos: (\result.ok != 0 && neg == 0) ==> vsum(\result.y) == m0*v0 + m1*v1 + m2*v2 + t;
+    ensures neg: (\result.ok != 0 && neg != 0) ==> vsum(\result.y) == -(m0*v0 + m1*v1 + m2*v2 + t);
+*/
+static terms exact_terms(double m0, double m1, double m2, double t,
+                         double v0, double v1, double v2, int neg)
+{
+    terms r;
+    r.y.v0 = 0.0; r.y.v1 = 0.0; r.y.v2 = 0.0; r.y.v3 = 0.0;
+    r.y.v4 = 0.0; r.y.v5 = 0.0; r.y.v6 = 0.0; r.y.v7 = 0.0;
+    r.ok = 0;
+    if (!eft_ok(m0, v0) || !eft_ok(m1, v1) || !eft_ok(m2, v2))
+        return r;
+    cbx_dd q0 = cbx_two_prod(m0, v0);
+    cbx_dd q1 = cbx_two_prod(m1, v1);
+    cbx_dd q2 = cbx_two_prod(m2, v2);
+    if (neg) {
+        r.y.v0 = -t; r.y.v1 = -q0.lo; r.y.v2 = -q1.lo; r.y.v3 = -q2.lo;
+        r.y.v4 = -q0.hi; r.y.v5 = -q1.hi; r.y.v6 = -q2.hi;
+    } else {
+        r.y.v0 = t; r.y.v1 = q0.lo; r.y.v2 = q1.lo; r.y.v3 = q2.lo;
+        r.y.v4 = q0.hi; r.y.v5 = q1.hi; r.y.v6 = q2.hi;
+    }
+    r.ok = 1;
+    return r;
+}
+
+/* The largest certified double <= t + m.v, or r when none beats r. */
+/*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
+    requires finr: \is_finite(r);
+    requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2) && -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures same_or_better: \result == r || (r < \result && \result <= m0*v0 + m1*v1 + m2*v2 + t);
+*/
+static double tighten_lo(double r, double m0, double m1, double m2, double t,
+                         double v0, double v1, double v2)
+{
+    terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 0);
+    if (!e.ok)
+        return r;
+    return tighten_core(r, e.y);
+}
+
+/* The smallest certified double >= t + m.v, or r: the same on -(t + m.v). */
+/*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
+    requires finr: \is_finite(r);
+    requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2) && -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures same_or_better: \result == r || (\result < r && m0*v0 + m1*v1 + m2*v2 + t <= \result);
+*/
+static double tighten_hi(double r, double m0, double m1, double m2, double t,
+                         double v0, double v1, double v2)
+{
+    terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 1);
+    if (!e.ok)
+        return r;
+    double x = tighten_core(-r, e.y);
+    return -x;
+}
+
+/* Lemma functions (empty bodies): a tighter end certified at the vertex
+ * keeps the whole axis promise. */
+/*@ requires sound: axis_sound_s(lo, hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
+                  && !\is_NaN(l2) && !\is_NaN(h2);
+    requires ne: !no_point(l0, h0) && !no_point(l1, h1) && !no_point(l2, h2);
+    requires fin: \is_finite(lo) && \is_finite(c) && map_fin(m0, m1, m2, t);
+    requires v: v0 == vlo(m0, l0, h0) && v1 == vlo(m1, l1, h1) && v2 == vlo(m2, l2, h2);
+    requires col: (\forall real p; ext_in(p, l0, h0) ==> m0*v0 <= m0*p) && (\forall real p; ext_in(p, l1, h1) ==> m1*v1 <= m1*p) && (\forall real p; ext_in(p, l2, h2) ==> m2*v2 <= m2*p);
+    requires gt: lo < c && c <= m0*v0 + m1*v1 + m2*v2 + t;
+    assigns \nothing;
+    ensures axis_sound_s(c, hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+*/
+static void tight_lo_sound(double lo, double hi, double c, double m0, double m1, double m2,
+                           double t, double l0, double h0, double l1, double h1,
+                           double l2, double h2, double v0, double v1, double v2)
+{
+    /*@ assert i0: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (ext_in(l0, l0, h0) && ext_in(h0, l0, h0)); */
+    /*@ assert c0: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (m0*v0 <= m0*l0 && m0*v0 <= m0*h0); */
+    /*@ assert i1: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (ext_in(l1, l1, h1) && ext_in(h1, l1, h1)); */
+    /*@ assert c1: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (m1*v1 <= m1*l1 && m1*v1 <= m1*h1); */
+    /*@ assert i2: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (ext_in(l2, l2, h2) && ext_in(h2, l2, h2)); */
+    /*@ assert c2: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (m2*v2 <= m2*l2 && m2*v2 <= m2*h2); */
+    /*@ assert b8: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> below8(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    /*@ assert lt: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> lo_tight(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    /*@ assert eb: ext_below(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    /*@ assert ee: (!row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) && map_fin(m0, m1, m2, t)) ==> ext_lo_end(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    (void)lo; (void)hi; (void)c; (void)m0; (void)m1; (void)m2; (void)t;
+    (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2; (void)v0; (void)v1; (void)v2;
+}
+
+/*@ requires sound: axis_sound_s(lo, hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
+                  && !\is_NaN(l2) && !\is_NaN(h2);
+    requires ne: !no_point(l0, h0) && !no_point(l1, h1) && !no_point(l2, h2);
+    requires fin: \is_finite(hi) && \is_finite(c) && map_fin(m0, m1, m2, t);
+    requires v: v0 == vhi(m0, l0, h0) && v1 == vhi(m1, l1, h1) && v2 == vhi(m2, l2, h2);
+    requires col: (\forall real p; ext_in(p, l0, h0) ==> m0*v0 >= m0*p) && (\forall real p; ext_in(p, l1, h1) ==> m1*v1 >= m1*p) && (\forall real p; ext_in(p, l2, h2) ==> m2*v2 >= m2*p);
+    requires lt: c < hi && m0*v0 + m1*v1 + m2*v2 + t <= c;
+    assigns \nothing;
+    ensures axis_sound_s(lo, c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+*/
+static void tight_hi_sound(double lo, double hi, double c, double m0, double m1, double m2,
+                           double t, double l0, double h0, double l1, double h1,
+                           double l2, double h2, double v0, double v1, double v2)
+{
+    /*@ assert i0: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (ext_in(l0, l0, h0) && ext_in(h0, l0, h0)); */
+    /*@ assert c0: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (m0*v0 >= m0*l0 && m0*v0 >= m0*h0); */
+    /*@ assert i1: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (ext_in(l1, l1, h1) && ext_in(h1, l1, h1)); */
+    /*@ assert c1: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (m1*v1 >= m1*l1 && m1*v1 >= m1*h1); */
+    /*@ assert i2: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (ext_in(l2, l2, h2) && ext_in(h2, l2, h2)); */
+    /*@ assert c2: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> (m2*v2 >= m2*l2 && m2*v2 >= m2*h2); */
+    /*@ assert b8: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> above8(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    /*@ assert lt: row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==> hi_tight(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    /*@ assert eb: ext_above(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    /*@ assert ee: (!row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) && map_fin(m0, m1, m2, t)) ==> ext_hi_end(c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2); */
+    (void)lo; (void)hi; (void)c; (void)m0; (void)m1; (void)m2; (void)t;
+    (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2; (void)v0; (void)v1; (void)v2;
+}
+
+typedef struct tight_result { double lo, hi; } tight_result;
+
+/* One axis: tighten each finite end of a sound axis at its vertex. */
+/*@ requires sound: axis_sound_s(lo, hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
+                  && !\is_NaN(l2) && !\is_NaN(h2) && !\is_NaN(lo) && !\is_NaN(hi);
+    requires ne: !no_point(l0, h0) && !no_point(l1, h1) && !no_point(l2, h2);
+    assigns \nothing;
+    ensures sound: axis_sound_s(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+*/
+static tight_result tight_axis(double lo, double hi, double m0, double m1, double m2, double t,
+                               double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    tight_result r;
+    r.lo = lo;
+    r.hi = hi;
+    if (!(cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)))
+        return r;
+    if (cbx_is_fin(lo)) {
+        end_result w0 = vertex_lo(m0, l0, h0);
+        end_result w1 = vertex_lo(m1, l1, h1);
+        end_result w2 = vertex_lo(m2, l2, h2);
+        if (w0.ok && w1.ok && w2.ok
+            && cbx_row_ok(m0, m1, m2, t, w0.v, w0.v, w1.v, w1.v, w2.v, w2.v)) {
+            double c = tighten_lo(lo, m0, m1, m2, t, w0.v, w1.v, w2.v);
+            if (c > lo) {
+                tight_lo_sound(lo, hi, c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2, w0.v, w1.v, w2.v);
+                r.lo = c;
+            }
+        }
+    }
+    if (cbx_is_fin(hi)) {
+        end_result w0 = vertex_hi(m0, l0, h0);
+        end_result w1 = vertex_hi(m1, l1, h1);
+        end_result w2 = vertex_hi(m2, l2, h2);
+        if (w0.ok && w1.ok && w2.ok
+            && cbx_row_ok(m0, m1, m2, t, w0.v, w0.v, w1.v, w1.v, w2.v, w2.v)) {
+            double c = tighten_hi(hi, m0, m1, m2, t, w0.v, w1.v, w2.v);
+            if (c < hi) {
+                tight_hi_sound(r.lo, hi, c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2, w0.v, w1.v, w2.v);
+                r.hi = c;
+            }
+        }
+    }
+    return r;
+}
+
+cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out)
+{
+    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
+    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
+    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
+    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
+    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_status st = cbx_transform_box(a, in, out);
+    if (st != CBX_OK && st != CBX_ERANGE)
+        return st;
+    tight_result r0 = tight_axis(out->lo[0], out->hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
+    tight_result r1 = tight_axis(out->lo[1], out->hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
+    tight_result r2 = tight_axis(out->lo[2], out->hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
+    out->lo[0] = r0.lo; out->hi[0] = r0.hi;
+    out->lo[1] = r1.lo; out->hi[1] = r1.hi;
+    out->lo[2] = r2.lo; out->hi[2] = r2.hi;
+    return st;
+}
