@@ -345,6 +345,14 @@
     lemma box_sev_v_fun: \forall double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
                              double l0, double h0, double l1, double h1, double l2, double h2, integer k1, k2;
       box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2, k1) && box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2, k2) ==> k1 == k2;
+
+    // The same with the output box as one struct value: the batch loop's
+    // invariant then frames (a write of out[k] leaves the value out[j]
+    // unchanged) where six separate fields did not.
+    predicate box_done_m(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                         double l0, double h0, double l1, double h1, double l2, double h2, cbx_box O) =
+      box_done_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2,
+                 O.lo[0], O.hi[0], O.lo[1], O.hi[1], O.lo[2], O.hi[2]);
 */
 
 /*@ // ---------------------------------------------------------------------

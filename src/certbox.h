@@ -168,7 +168,7 @@ cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_b
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
     assigns out[0 .. n - 1];
     ensures done: \forall integer k; 0 <= k < n ==>
-      box_done_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), CBX_BV(out + k, Here));
+      box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]);
     ensures worst: \forall integer k, s; 0 <= k < n ==>
       box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), s) ==> s <= sev(\result);
     ensures met: n > 0 ==> \exists integer k; 0 <= k < n &&

@@ -875,7 +875,7 @@ int main(int argc, char **argv)
                  opt_tight.ends, opt_tight.max_off,
                  opt_tight.ends ? opt_tight.sum_off / (double)opt_tight.ends : 0.0);
         if (opt_tight.off) strcat(rows[nrows - 1].note, "**");
-        ADDROW("3b", "certbox batch `cbx_transform_boxes`", batch, &ex_box[6], "per box (loop: no)", 0);
+        ADDROW("3b", "certbox batch `cbx_transform_boxes`", batch, &ex_box[6], "yes", 1);
         snprintf(rows[nrows - 1].note, sizeof rows[0].note,
                  "one call over the %lu boxes, all under the first map; a loop of "
                  "`cbx_transform_box` over the same boxes and map: %.2f ns/box; output %s",
@@ -915,7 +915,7 @@ int main(int argc, char **argv)
                      "%lu cases, %.0f MB in+out (out of cache if above L3); memcpy %.2f ns/case (%.1f GB/s)",
                      (unsigned long)nb, (double)(nb * pb) / 1e6, t_mb, (double)pb / t_mb);
             (void)c_mb;
-            ADDROW("T1b", "throughput `cbx_transform_boxes`, in cache", tcb, (const acc *)0, "per box (loop: no)", 0);
+            ADDROW("T1b", "throughput `cbx_transform_boxes`, in cache", tcb, (const acc *)0, "yes", 1);
             rows[nrows - 1].plot = 0;
             rows[nrows - 1].vs_memcpy = t_tcb / t_mcb;
             snprintf(rows[nrows - 1].note, sizeof rows[0].note,
@@ -924,7 +924,7 @@ int main(int argc, char **argv)
                      (double)(nc * 2 * sizeof(cbx_box)) / 1e3, t_mcb,
                      (double)(2 * sizeof(cbx_box)) / t_mcb);
             (void)c_mcb;
-            ADDROW("T2b", "throughput `cbx_transform_boxes`, large array", tbb, (const acc *)0, "per box (loop: no)", 0);
+            ADDROW("T2b", "throughput `cbx_transform_boxes`, large array", tbb, (const acc *)0, "yes", 1);
             rows[nrows - 1].plot = 0;
             rows[nrows - 1].vs_memcpy = t_tbb / t_mbb;
             snprintf(rows[nrows - 1].note, sizeof rows[0].note,
