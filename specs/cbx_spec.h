@@ -342,9 +342,15 @@
       || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2) && ok_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 0)
       || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2) && !ok_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 2);
 
-    lemma box_sev_v_fun: \forall double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                             double l0, double h0, double l1, double h1, double l2, double h2, integer k1, k2;
-      box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2, k1) && box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2, k2) ==> k1 == k2;
+    // The severity of the status for this box is at most w.  (Stated without
+    // a quantifier over severities: a global lemma "box_sev_v is a
+    // function" made the provers time out on unrelated lemmas.)
+    predicate box_sev_le(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
+                         double l0, double h0, double l1, double h1, double l2, double h2, integer w) =
+      0 <= w
+      && (nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) ==> 3 <= w)
+      && ((!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && empty_v(l0, h0, l1, h1, l2, h2)) ==> 1 <= w)
+      && ((!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2) && !ok_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)) ==> 2 <= w);
 
     // The same with the output box as one struct value: the batch loop's
     // invariant then frames (a write of out[k] leaves the value out[j]

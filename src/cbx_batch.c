@@ -74,8 +74,8 @@ cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *
     /*@ loop invariant rng: 0 <= k <= n;
         loop invariant done: \forall integer j; 0 <= j < k ==>
           box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]);
-        loop invariant sevmax: \forall integer j, s; 0 <= j < k ==>
-          box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), s) ==> s <= sev(worst);
+        loop invariant sevmax: \forall integer j; 0 <= j < k ==>
+          box_sev_le(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(worst));
         loop invariant met: (k == 0 && worst == CBX_OK)
           || (\exists integer j; 0 <= j < k && box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(worst)));
         loop invariant stv: worst == CBX_OK || worst == CBX_EMPTY || worst == CBX_ERANGE || worst == CBX_EINVAL;
