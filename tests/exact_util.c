@@ -2,6 +2,7 @@
 #include "exact_util.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* Same order as dom_pair in specs/cbx_spec.h; 509 is in the spec's list
@@ -1047,4 +1048,18 @@ double xu_gen_mag(xu_rng *r, int emin, int emax)
 double xu_gen_signed(xu_rng *r, int emin, int emax)
 {
     return xu_rng_sign(r) * xu_gen_mag(r, emin, emax);
+}
+
+unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long dflt,
+                              const char *usage)
+{
+    char *end;
+    unsigned long long v;
+    if (argc <= n) return dflt;
+    v = strtoull(argv[n], &end, 0);
+    if (*argv[n] == '\0' || *argv[n] == '-' || *end != '\0') {
+        fprintf(stderr, "usage: %s %s\n", argv[0], usage);
+        exit(2);
+    }
+    return v;
 }

@@ -345,4 +345,9 @@ double xu_rng_unit(xu_rng *r);                      /* [0, 1), 53 bits     */
 double xu_gen_mag(xu_rng *r, int emin, int emax);
 double xu_gen_signed(xu_rng *r, int emin, int emax); /* with -0.0 */
 
+/* Command-line argument n as an unsigned number (decimal, 0x.. hex), or
+ * dflt when absent; anything else prints "usage: PROG usage" and exits 2. */
+unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long dflt,
+                              const char *usage);
+
 #endif /* EXACT_UTIL_H */

@@ -265,23 +265,10 @@ static void random_batch(xu_rng *r, stats *st, const cbx_affine *a, size_t n)
     run_batch(st, a, in, kinds, n);
 }
 
-static unsigned long long arg_num(int argc, char **argv, int n, unsigned long long dflt)
-{
-    char *end;
-    unsigned long long v;
-    if (argc <= n) return dflt;
-    v = strtoull(argv[n], &end, 0);
-    if (*argv[n] == '\0' || *argv[n] == '-' || *end != '\0') {
-        fprintf(stderr, "usage: %s [N] [seed]\n", argv[0]);
-        exit(2);
-    }
-    return v;
-}
-
 int main(int argc, char **argv)
 {
-    long rounds = (long)arg_num(argc, argv, 1, 200), c;
-    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 1);
+    long rounds = (long)xu_arg_num(argc, argv, 1, 200, "[N] [seed]"), c;
+    uint64_t seed = (uint64_t)xu_arg_num(argc, argv, 2, 1, "[N] [seed]");
     static const size_t sizes[5] = { 0, 1, 2, 7, 1000 };
     static stats st;
     xu_rng rng;

@@ -508,23 +508,10 @@ static void run_huge_end(ctx *k, section *s)
     run_one(k, s, &a, &b);
 }
 
-static unsigned long long arg_num(int argc, char **argv, int n, unsigned long long dflt)
-{
-    char *end;
-    unsigned long long v;
-    if (argc <= n) return dflt;
-    v = strtoull(argv[n], &end, 0);
-    if (*argv[n] == '\0' || *argv[n] == '-' || *end != '\0') {
-        fprintf(stderr, "usage: %s [N] [seed]\n", argv[0]);
-        exit(2);
-    }
-    return v;
-}
-
 int main(int argc, char **argv)
 {
-    long n = (long)arg_num(argc, argv, 1, 150), m, c;
-    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 1);
+    long n = (long)xu_arg_num(argc, argv, 1, 150, "[N] [seed]"), m, c;
+    uint64_t seed = (uint64_t)xu_arg_num(argc, argv, 2, 1, "[N] [seed]");
     static section s1, s2;
     ctx k;
     long failed, cases;

@@ -917,25 +917,12 @@ static void sec_print(const sec *s)
                c_unit[c], s->fail[c]);
 }
 
-static unsigned long long arg_num(int argc, char **argv, int n, unsigned long long dflt)
-{
-    char *end;
-    unsigned long long v;
-    if (argc <= n) return dflt;
-    v = strtoull(argv[n], &end, 0);
-    if (*argv[n] == '\0' || *argv[n] == '-' || *end != '\0') {
-        fprintf(stderr, "usage: %s [N_THOUSANDS] [seed]\n", argv[0]);
-        exit(2);
-    }
-    return v;
-}
-
 typedef void (*gen_fn)(xu_rng *, cbx_affine *, cbx_box *);
 
 int main(int argc, char **argv)
 {
-    long nth = (long)arg_num(argc, argv, 1, 30), n, c;
-    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 1);
+    long nth = (long)xu_arg_num(argc, argv, 1, 30, "[N_THOUSANDS] [seed]"), n, c;
+    uint64_t seed = (uint64_t)xu_arg_num(argc, argv, 2, 1, "[N_THOUSANDS] [seed]");
     static tctx k;
     static sec s[6], tot;
     static const char *const titles[6] = {
