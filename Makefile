@@ -25,8 +25,8 @@ ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Isrc
 SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 B := build
-LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c
-HEADERS := src/certbox.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_eft.h specs/cbx_tight.h specs/cbx_spec.h specs/cbx_ball.h
+LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c
+HEADERS := src/certbox.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)
@@ -68,7 +68,7 @@ demo: check-deps-test
 	$(MAKE) $(B)/demo
 	./$(B)/demo
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes
 test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -80,6 +80,7 @@ test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_chain 1000 20 1
 	./$(B)/test_batch 200 1
 	./$(B)/test_tight 150 1
+	./$(B)/test_classes 200000 1
 
 # Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
 test-san: $(TESTS:%=$(B)/san/test_%)
@@ -93,6 +94,7 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_chain 1000 10 2
 	./$(B)/san/test_batch 200 2
 	./$(B)/san/test_tight 50 2
+	./$(B)/san/test_classes 50000 2
 
 # The public header compiles as C99, C11 and C++.
 header-check:
@@ -145,14 +147,14 @@ install: all
 	install -m 755 $(B)/libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcertbox.so
-	install -m 644 src/certbox.h specs/cbx_spec.h specs/cbx_ball.h $(DESTDIR)$(INCDIR)/
+	install -m 644 src/certbox.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h $(DESTDIR)$(INCDIR)/
 	sed -e 's#@PREFIX@#$(PREFIX)#' -e 's#@LIBDIR@#$(LIBDIR)#' -e 's#@INCDIR@#$(INCDIR)#' \
 	    -e 's#@VERSION@#$(VERSION)#' certbox.pc.in > $(DESTDIR)$(PCDIR)/certbox.pc
 
 uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
 	      $(DESTDIR)$(INCDIR)/certbox.h $(DESTDIR)$(INCDIR)/cbx_spec.h \
-	      $(DESTDIR)$(INCDIR)/cbx_ball.h $(DESTDIR)$(PCDIR)/certbox.pc
+	      $(DESTDIR)$(INCDIR)/cbx_ball.h $(DESTDIR)$(INCDIR)/cbx_class.h $(DESTDIR)$(PCDIR)/certbox.pc
 
 # libFuzzer harnesses with the exact GMP oracle (tests/fuzz/); needs clang.
 fuzz: check-deps-test

@@ -7,3 +7,5 @@
 #include "cbx_sphere.c"
 #include "cbx_batch.c"
 #include "cbx_tight.c"
+#include "cbx_class.c"
+#include "cbx_motion.c"

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Summarise a Frama-C/WP log as proofs/report.md (per function: proved/total,
 provers, time).  Usage: report.py wp.log smoke.log main_seconds smoke_seconds"""
+import os
 import re
 import subprocess
 import sys
@@ -19,7 +20,7 @@ def functions(log):
 def owner(goal, names):
     g = goal[len('typed_'):] if goal.startswith('typed_') else goal
     if g.startswith('lemma_'):
-        return 'lemmas (specs/cbx_spec.h, specs/cbx_ball.h)'
+        return 'lemmas (specs/cbx_spec.h, specs/cbx_ball.h, specs/cbx_class.h)'
     for n in names:
         if g.startswith(n + '_'):
             return n
@@ -96,7 +97,7 @@ def main():
     out.append('')
     out.append('Tools: %s; %s; %s; %s.' % (tool('frama-c -version'), tool('why3 --version'),
                tool('cvc4 --version | head -1'), tool('z3 -version')))
-    out.append('Wall time: %s s for the three proof passes (lemmas, kernels, public functions) and %s s for the smoke tests (2 cores).\n' % (t_main, t_smoke))
+    out.append('Wall time: %s s for the three proof passes (lemmas, kernels, public functions) and %s s for the smoke tests (%s prover jobs).\n' % (t_main, t_smoke, os.environ.get('CBX_PAR', '2')))
     failed = [g for d in per.values() for g in d['failed']]
     if failed:
         out.append('Unproved goals:\n')

@@ -1,10 +1,13 @@
 /*
- * Batch form of the interval transform: one call per box of the proven
- * single-box function, and the most severe status met.  The call for box
+ * Batch form of the interval transform: the map is classified once
+ * (cbx_classify), then one call per box of the proven class kernel
+ * (cbx_transform_box_as, cbx_transform_box's promise), and the most severe
+ * status met.  The call for box
  * k writes exactly out[k]; the loop invariant carries each finished box's whole promise as
  * a predicate on values (box_done_v), which a write elsewhere cannot touch.
  */
 #include "certbox.h"
+#include "cbx_onebox.h"
 
 /* Severity order of the statuses (specs: sev). */
 /*@ assigns \nothing;
@@ -16,24 +19,6 @@ static int severity(cbx_status s)
     if (s == CBX_ERANGE) return 2;
     if (s == CBX_EMPTY) return 1;
     return 0;
-}
-
-/* One box, returned by value: cbx_transform_box's promise restated on
- * values (the output is a value, not memory, until put_box writes it). */
-typedef struct box_st { cbx_box o; cbx_status s; } box_st;
-
-/*@ requires valid: \valid_read(a) && \valid_read(b);
-    assigns \nothing;
-    ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(b, Pre), \result.o);
-    ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(b, Pre), sev(\result.s));
-    ensures st: \result.s == CBX_OK || \result.s == CBX_EMPTY || \result.s == CBX_ERANGE
-                || \result.s == CBX_EINVAL;
-*/
-static box_st one_box(const cbx_affine *a, const cbx_box *b)
-{
-    box_st r;
-    r.s = cbx_transform_box(a, b, &r.o);
-    return r;
 }
 
 /* Write out[k]; every other out[j] is left alone (a small goal of its own:
@@ -54,15 +39,18 @@ static void put_box(cbx_box *out, size_t k, size_t n, cbx_box o)
 /*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
     requires k: k < n;
+    requires cls: class_ok(a, cls);
     assigns out[k];
     ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]);
     ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
     ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
     ensures frame: \forall integer j; 0 <= j < n && j != k ==> out[j] == \at(out[j], Pre);
+    ensures cls: class_ok(a, cls);
 */
-static cbx_status step(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t k, size_t n)
+static cbx_status step(const cbx_affine *a, cbx_class cls, const cbx_box *in, cbx_box *out,
+                       size_t k, size_t n)
 {
-    box_st r = one_box(a, in + k);
+    box_st r = one_box_as(a, cls, in + k);
     put_box(out, k, n, r.o);
     return r.s;
 }
@@ -70,8 +58,10 @@ static cbx_status step(const cbx_affine *a, const cbx_box *in, cbx_box *out, siz
 cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t n)
 {
     cbx_status worst = CBX_OK;
+    cbx_class cls = cbx_classify(a);   /* classify once: the prepared form */
     size_t k;
     /*@ loop invariant rng: 0 <= k <= n;
+        loop invariant cls: class_ok(a, cls);
         loop invariant done: \forall integer j; 0 <= j < k ==>
           box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]);
         loop invariant sevmax: \forall integer j; 0 <= j < k ==>
@@ -83,7 +73,7 @@ cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *
         loop variant n - k;
     */
     for (k = 0; k < n; k++) {
-        cbx_status s = step(a, in, out, k, n);
+        cbx_status s = step(a, cls, in, out, k, n);
         /*@ assert this: \forall integer j; j == k ==>
               box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]); */
         /*@ assert sevk: \forall integer j; j == k ==>

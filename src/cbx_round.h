@@ -122,4 +122,46 @@ static inline double cbx_widening(double t, double g0, double g1, double g2)
     return cbx_add_rn(w, 0x1p-1067);
 }
 
+/* x + t rounded down (cbx_add_dn) or up (cbx_add_up), with a margin: the
+ * result is at least 3 u (|x| + |t|) + 2^-1070 below (above) the exact sum,
+ * which pays for a rounding error of x of up to that size (one product
+ * rounded to nearest, in the class kernels), and within
+ * 8 u (|x| + |t|) + 2^-1066 + 2^-1072 of it.  Four operations and the
+ * widening's four. */
+/*@ requires fin: \is_finite(x) && \is_finite(t);
+    requires rx: -0x1p1019 <= x <= 0x1p1019;
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures below: \result <= x + t - (0x1.8p-52 * (\abs(x) + \abs(t)) + 0x1p-1070);
+    ensures near: \result >= x + t - (0x1p-50 * (\abs(x) + \abs(t)) + 0x1p-1066 + 0x1p-1072);
+*/
+static inline double cbx_add_dn(double x, double t)
+{
+    double s = cbx_add_rn(x, t);
+    double w = cbx_widening(t, cbx_abs(x), 0.0, 0.0);
+    /*@ assert se: \abs(s - (x + t)) <= 0x1p-53 * (\abs(x) + \abs(t)) + 0x1p-1074; */
+    /*@ assert wl: w >= 0x1.6p-51 * (\abs(x) + \abs(t)) * (1 - 0x1p-50) + 0x1p-1068; */
+    /*@ assert wh: w <= 0x1.6p-51 * (\abs(x) + \abs(t)) * (1 + 0x1p-50) + 0x1p-1066; */
+    return cbx_sub_rn(s, w);
+}
+
+/*@ requires fin: \is_finite(x) && \is_finite(t);
+    requires rx: -0x1p1019 <= x <= 0x1p1019;
+    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures above: \result >= x + t + (0x1.8p-52 * (\abs(x) + \abs(t)) + 0x1p-1070);
+    ensures near: \result <= x + t + (0x1p-50 * (\abs(x) + \abs(t)) + 0x1p-1066 + 0x1p-1072);
+*/
+static inline double cbx_add_up(double x, double t)
+{
+    double s = cbx_add_rn(x, t);
+    double w = cbx_widening(t, cbx_abs(x), 0.0, 0.0);
+    /*@ assert se: \abs(s - (x + t)) <= 0x1p-53 * (\abs(x) + \abs(t)) + 0x1p-1074; */
+    /*@ assert wl: w >= 0x1.6p-51 * (\abs(x) + \abs(t)) * (1 - 0x1p-50) + 0x1p-1068; */
+    /*@ assert wh: w <= 0x1.6p-51 * (\abs(x) + \abs(t)) * (1 + 0x1p-50) + 0x1p-1066; */
+    return cbx_add_rn(s, w);
+}
+
 #endif /* CBX_ROUND_H */

@@ -63,9 +63,22 @@ typedef enum cbx_status {
                         axes are [-inf, +inf], the others are proven       */
 } cbx_status;
 
+/* Transform classes (cbx_classify).  Each class is contained in the next:
+ * IDENTITY c TRANSLATE c SCALE c PERMUTE c GENERAL. */
+typedef enum cbx_class {
+    CBX_CLASS_GENERAL = 0,   /* any map (or an entry NaN or infinite)           */
+    CBX_CLASS_PERMUTE = 1,   /* each row of the linear part has at most one
+                                nonzero entry: signed permutation with scale
+                                (and projections), + translation             */
+    CBX_CLASS_SCALE = 2,     /* linear part diagonal, + translation            */
+    CBX_CLASS_TRANSLATE = 3, /* linear part the identity, + translation        */
+    CBX_CLASS_IDENTITY = 4   /* the identity map                               */
+} cbx_class;
+
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
 #include "cbx_ball.h"
+#include "cbx_class.h"
 #endif
 
 /* Transform an axis-aligned box by an affine map (Arvo's interval form,
@@ -158,6 +171,82 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     disjoint behaviors;
 */
 cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out);
+
+/* ---- transform classes: compute only what the map calls for -----------
+ * cbx_classify sorts a map into the smallest class that holds it (every
+ * entry finite; zeros and ones compared exactly, -0 is 0).
+ * cbx_transform_box_as runs the class's own kernel: IDENTITY copies the
+ * box, TRANSLATE does 6 outward-rounded additions, SCALE and PERMUTE one
+ * product and one outward-rounded addition per end, GENERAL is
+ * cbx_transform_box.  Its contract is cbx_transform_box's, word for word
+ * (same statuses, same special and infinite cases, the same containment and
+ * tightness statement), proven for every class; the result is never looser
+ * than cbx_transform_box's (GMP-checked).  Inputs outside a class kernel's
+ * fast range (any end infinite or above 2^509 in magnitude for SCALE and
+ * PERMUTE, 2^1018 for IDENTITY and TRANSLATE; empty or NaN boxes) take the
+ * general kernel.
+ * cls must be cbx_classify(a) or a larger class (GENERAL is always
+ * allowed): classify once, then apply to many boxes (the prepared form;
+ * cbx_transform_boxes does this itself). */
+/*@ requires valid: \valid_read(a);
+    assigns \nothing;
+    ensures holds: class_ok(a, \result);
+    ensures least: class_least(a, \result);
+*/
+cbx_class cbx_classify(const cbx_affine *a);
+
+/*@ requires valid_a:   \valid_read(a);
+    requires valid_in:  \valid_read(in);
+    requires valid_out: \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    requires cls: class_ok(a, cls);
+    assigns *out;
+    CBX_BOX_BEHAVIORS(a, in, out)
+*/
+cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_box *in, cbx_box *out);
+
+/* ---- motion: a box over a shutter interval ------------------------------
+ * The map at time s in [0, 1] is the linear interpolation of two affine
+ * maps, M(s) = (1 - s) M0 + s M1 (entry by entry, translations included).
+ * The image of a point p is then (1 - s)(M0 p) + s (M1 p), between its two
+ * end images, so the union of the two end boxes is the exact bound over
+ * the interval; cbx_motion_box returns that union, outward rounded.
+ * Proven: on every axis where both rows are full (finite, in the domain),
+ * for every real s in [0, 1] and every corner c of the box,
+ *     out->lo[i] <= (M(s) c)_i <= out->hi[i]   (exact reals);
+ * on axes where neither row is full (half-spaces, out-of-domain pairs)
+ * every finite end bounds (M(s) p)_i for every real point p and s; where
+ * one row is full and the other not, or a row has an infinite entry, the
+ * axis is [-inf, +inf].  Status: CBX_EINVAL (NaN) and CBX_EMPTY as
+ * cbx_transform_box; CBX_OK when both ends' calls would return CBX_OK and
+ * no axis mixes a full row with a non-full one; CBX_ERANGE otherwise.  Not covered: rotations interpolated otherwise
+ * (slerp, screw motion); bound those by sampling with a proven margin, or
+ * by the box of the swept rotation, before calling this. */
+/*@ requires valid: \valid_read(a0) && \valid_read(a1) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a0) && \separated(out, a1) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes has_nan(a0, in) || has_nan(a1, in);
+      ensures \result == CBX_EINVAL;
+      ensures whole_space(out);
+    behavior empty_input:
+      assumes !has_nan(a0, in) && !has_nan(a1, in) && is_empty(in);
+      ensures \result == CBX_EMPTY;
+      ensures empty_out(out);
+    behavior box_input:
+      assumes !has_nan(a0, in) && !has_nan(a1, in) && !is_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: mot_axis(out->lo[0], out->hi[0], CBX_ROWV(a0, 0, Pre), CBX_ROWV(a1, 0, Pre), CBX_BV(in, Pre));
+      ensures axis1: mot_axis(out->lo[1], out->hi[1], CBX_ROWV(a0, 1, Pre), CBX_ROWV(a1, 1, Pre), CBX_BV(in, Pre));
+      ensures axis2: mot_axis(out->lo[2], out->hi[2], CBX_ROWV(a0, 2, Pre), CBX_ROWV(a1, 2, Pre), CBX_BV(in, Pre));
+      ensures ok_iff: \result == CBX_OK <==>
+        \at(row_ok(a0, in, 0) && row_ok(a0, in, 1) && row_ok(a0, in, 2)
+            && row_ok(a1, in, 0) && row_ok(a1, in, 1) && row_ok(a1, in, 2)
+            && mot_same(a0, a1, in, 0) && mot_same(a0, a1, in, 1) && mot_same(a0, a1, in, 2), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_motion_box(const cbx_affine *a0, const cbx_affine *a1, const cbx_box *in, cbx_box *out);
 
 /* Batch form: out[k] = the box of in[k] under *a, for k = 0 .. n-1, each with
  * exactly cbx_transform_box's output and promise (proven for every k).
