@@ -32,7 +32,7 @@ PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)
 
 .PHONY: fuzz fuzz-check mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
-all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/demo $(B)/certbox.pc
+all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/demo $(B)/certbox $(B)/certbox.pc
 
 $(B)/obj/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(@D)
@@ -58,6 +58,15 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 TESTUTIL := tests/exact_util.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+# The scene tool (issue 6): src/scene/, built with the library's flags.
+SCENESRC := src/scene/scene.c
+$(B)/certbox: src/scene/main.c $(SCENESRC) src/scene/scene.h $(B)/libcertbox.a
+	$(CC) $(ALLCFLAGS) src/scene/main.c $(SCENESRC) $(B)/libcertbox.a -lm -o $@
+$(B)/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
+	$(CC) $(ALLCFLAGS) -Itests -Isrc/scene $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+	@mkdir -p $(@D)
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Isrc/scene -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
@@ -65,11 +74,13 @@ $(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_uti
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 
 demo: check-deps-test
-	$(MAKE) $(B)/demo
+	$(MAKE) $(B)/demo $(B)/certbox
 	./$(B)/demo
+	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
+	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes
-test: $(TESTS:%=$(B)/test_%)
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene
+test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
 	./$(B)/test_exact 1000000 1
@@ -81,6 +92,9 @@ test: $(TESTS:%=$(B)/test_%)
 	./$(B)/test_batch 200 1
 	./$(B)/test_tight 150 1
 	./$(B)/test_classes 200000 1
+	./$(B)/test_scene examples/*.scene
+	for f in examples/*.scene; do ./$(B)/certbox $$f > /dev/null || exit 1; done
+	! ./$(B)/certbox examples/scene-format.md > /dev/null 2>&1
 
 # Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
 test-san: $(TESTS:%=$(B)/san/test_%)
@@ -95,6 +109,7 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_batch 200 2
 	./$(B)/san/test_tight 50 2
 	./$(B)/san/test_classes 50000 2
+	./$(B)/san/test_scene examples/*.scene
 
 # The public header compiles as C99, C11 and C++.
 header-check:

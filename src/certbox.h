@@ -249,7 +249,9 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_bo
 cbx_status cbx_motion_box(const cbx_affine *a0, const cbx_affine *a1, const cbx_box *in, cbx_box *out);
 
 /* Batch form: out[k] = the box of in[k] under *a, for k = 0 .. n-1, each with
- * exactly cbx_transform_box's output and promise (proven for every k).
+ * cbx_transform_box's promise (proven for every k): the map is classified
+ * once and every box goes through the class kernel, so out[k] is exactly
+ * cbx_transform_box_as(a, cbx_classify(a), in + k, out + k)'s output.
  * Returns the most severe status met (CBX_EINVAL, then CBX_ERANGE, then
  * CBX_EMPTY, then CBX_OK; CBX_OK when n == 0).  Every out[k] is written.
  * The arrays in and out may not overlap, and out may not overlap *a. */

@@ -1,0 +1,533 @@
+/*
+ * Scene files: parsing and level-by-level evaluation (see scene.h and
+ * examples/scene-format.md).
+ *
+ * Soundness: no matrix is ever multiplied in floating point.  A leaf's
+ * bound in its node's coordinates comes from a proven function
+ * (cbx_ellipsoid_box for spheres and ellipsoids: exact dual-quadric bound,
+ * outward rounded; a box is itself), then every operation of the node, last
+ * first, maps the current box with cbx_transform_box_as and the class
+ * computed at load time (or cbx_motion_box for a motion node), then the
+ * parent's, up to the root.  Each step contains the exact image of the
+ * previous box, so the world box contains the exact image of the leaf
+ * under the exact product of the given double matrices.
+ */
+#include "scene.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const double SC_PI = 3.14159265358979323846;
+
+int scene_severity(cbx_status st)
+{
+    if (st == CBX_EINVAL) return 3;
+    if (st == CBX_ERANGE) return 2;
+    if (st == CBX_EMPTY) return 1;
+    return 0;
+}
+
+const char *scene_kind_name(int kind)
+{
+    return kind == SC_BOX ? "box" : kind == SC_SPHERE ? "sphere" : "ellipsoid";
+}
+
+void scene_free(scene *s)
+{
+    free(s->nodes);
+    free(s->ops);
+    free(s->leaves);
+    free(s->hash);
+    memset(s, 0, sizeof *s);
+}
+
+/* ---- parsing ------------------------------------------------------------ */
+typedef struct parser {
+    scene *s;
+    const char *file;
+    int line;
+    char *err;
+    size_t errlen;
+    int cur;            /* node receiving operations, -1 if none */
+    int side;           /* 0 before `motion`, 1 after */
+    int n0, n1;         /* operations on each side of the current node */
+} parser;
+
+static int fail(parser *p, const char *fmt, ...)
+{
+    char msg[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(p->err, p->errlen, "%s:%d: %s", p->file, p->line, msg);
+    return -1;
+}
+
+static unsigned long name_hash(const char *n)
+{
+    unsigned long h = 5381;
+    while (*n)
+        h = h * 33u + (unsigned char)*n++;
+    return h;
+}
+
+/* index+1 of a node (> 0), -(leaf+1) (< 0), or 0 if the name is unknown */
+static int lookup(const scene *s, const char *name)
+{
+    if (s->hcap == 0)
+        return 0;
+    unsigned long i = name_hash(name) % (unsigned long)s->hcap;
+    while (s->hash[i] != 0) {
+        int v = s->hash[i];
+        const char *m = v > 0 ? s->nodes[v - 1].name : s->leaves[-v - 1].name;
+        if (strcmp(m, name) == 0)
+            return v;
+        i = (i + 1) % (unsigned long)s->hcap;
+    }
+    return 0;
+}
+
+static int rehash(scene *s, int cap)
+{
+    int *h = calloc((size_t)cap, sizeof *h);
+    if (!h)
+        return -1;
+    free(s->hash);
+    s->hash = h;
+    s->hcap = cap;
+    for (int k = 0; k < s->nn; k++) {
+        unsigned long i = name_hash(s->nodes[k].name) % (unsigned long)cap;
+        while (h[i]) i = (i + 1) % (unsigned long)cap;
+        h[i] = k + 1;
+    }
+    for (int k = 0; k < s->nl; k++) {
+        unsigned long i = name_hash(s->leaves[k].name) % (unsigned long)cap;
+        while (h[i]) i = (i + 1) % (unsigned long)cap;
+        h[i] = -(k + 1);
+    }
+    return 0;
+}
+
+/* Register the newest node (v > 0) or leaf (v < 0) in the name table. */
+static int add_name(parser *p, int v)
+{
+    scene *s = p->s;
+    if (2 * (s->nn + s->nl) >= s->hcap && rehash(s, s->hcap ? 2 * s->hcap : 64) != 0)
+        return fail(p, "out of memory");
+    const char *n = v > 0 ? s->nodes[v - 1].name : s->leaves[-v - 1].name;
+    unsigned long i = name_hash(n) % (unsigned long)s->hcap;
+    while (s->hash[i]) i = (i + 1) % (unsigned long)s->hcap;
+    s->hash[i] = v;
+    return 0;
+}
+
+static int grow(void **ptr, int *cap, int need, size_t elem)
+{
+    if (need <= *cap)
+        return 0;
+    int c = *cap ? *cap : 16;
+    while (c < need) c *= 2;
+    void *q = realloc(*ptr, (size_t)c * elem);
+    if (!q)
+        return -1;
+    *ptr = q;
+    *cap = c;
+    return 0;
+}
+
+static int parse_num(parser *p, const char *tok, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok || *end != '\0')
+        return fail(p, "bad number '%s'", tok);
+    if (!isfinite(v))
+        return fail(p, "number '%s' is not finite", tok);
+    *out = v;
+    return 0;
+}
+
+static int parse_nums(parser *p, char **tok, int n, double *out)
+{
+    for (int k = 0; k < n; k++)
+        if (parse_num(p, tok[k], &out[k]) != 0)
+            return -1;
+    return 0;
+}
+
+static int check_name(parser *p, const char *name)
+{
+    size_t n = strlen(name);
+    if (n == 0 || n >= SC_NAME_MAX)
+        return fail(p, "name '%s' must have 1 to %d characters", name, SC_NAME_MAX - 1);
+    for (size_t k = 0; k < n; k++) {
+        char c = name[k];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9')
+              || c == '_' || c == '.' || c == '-'))
+            return fail(p, "name '%s' has a character outside [A-Za-z0-9_.-]", name);
+    }
+    if (lookup(p->s, name) != 0)
+        return fail(p, "name '%s' is already used", name);
+    return 0;
+}
+
+/* The rotation about axis (x, y, z) by deg degrees.  A coordinate axis and
+ * a multiple of 90 degrees give exact 0 / +-1 entries. */
+static void rotation(double x, double y, double z, double deg, double r[3][3])
+{
+    double n[3], c, s;
+    int nz = (x != 0.0) + (y != 0.0) + (z != 0.0);
+    if (nz == 1 && fmod(deg, 90.0) == 0.0) {
+        static const double cs[4] = {1.0, 0.0, -1.0, 0.0}, sn[4] = {0.0, 1.0, 0.0, -1.0};
+        long k = (long)fmod(deg / 90.0, 4.0);
+        k = (k % 4 + 4) % 4;
+        c = cs[k];
+        s = sn[k];
+        n[0] = x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0;
+        n[1] = y > 0 ? 1.0 : y < 0 ? -1.0 : 0.0;
+        n[2] = z > 0 ? 1.0 : z < 0 ? -1.0 : 0.0;
+    } else {
+        double len = sqrt(x * x + y * y + z * z);
+        n[0] = x / len; n[1] = y / len; n[2] = z / len;
+        double t = deg * (SC_PI / 180.0);
+        c = cos(t);
+        s = sin(t);
+    }
+    /* Rodrigues: R = c I + s [n]x + (1 - c) n n^T */
+    double k = 1.0 - c;
+    r[0][0] = c + k * n[0] * n[0];        r[0][1] = k * n[0] * n[1] - s * n[2]; r[0][2] = k * n[0] * n[2] + s * n[1];
+    r[1][0] = k * n[1] * n[0] + s * n[2]; r[1][1] = c + k * n[1] * n[1];        r[1][2] = k * n[1] * n[2] - s * n[0];
+    r[2][0] = k * n[2] * n[0] - s * n[1]; r[2][1] = k * n[2] * n[1] + s * n[0]; r[2][2] = c + k * n[2] * n[2];
+}
+
+static int add_op(parser *p, const cbx_affine *a)
+{
+    scene *s = p->s;
+    if (p->cur < 0)
+        return fail(p, "operation outside a node (declare `node NAME [PARENT]` first)");
+    if (s->no >= SC_COUNT_MAX)
+        return fail(p, "more than %d operations", SC_COUNT_MAX);
+    if (grow((void **)&s->ops, &s->capo, s->no + 1, sizeof *s->ops) != 0)
+        return fail(p, "out of memory");
+    s->ops[s->no].a = *a;
+    s->ops[s->no].cls = cbx_classify(a);
+    s->no++;
+    s->nodes[p->cur].n++;
+    if (p->side) p->n1++; else p->n0++;
+    return 0;
+}
+
+/* Close the current node: a motion node needs one operation per side. */
+static int close_node(parser *p)
+{
+    if (p->cur >= 0 && p->s->nodes[p->cur].motion && (p->n0 != 1 || p->n1 != 1)) {
+        int saved = p->line;
+        p->line = p->s->nodes[p->cur].line;
+        fail(p, "motion node '%s' needs exactly one operation before and one after "
+                "`motion` (it has %d and %d); the tool never composes matrices in floating point",
+             p->s->nodes[p->cur].name, p->n0, p->n1);
+        p->line = saved;
+        return -1;
+    }
+    p->cur = -1;
+    return 0;
+}
+
+static int statement(parser *p, char **tok, int nt)
+{
+    scene *s = p->s;
+    const char *w = tok[0];
+    cbx_affine a;
+    memset(&a, 0, sizeof a);
+    if (strcmp(w, "node") == 0) {
+        if (nt != 2 && nt != 3)
+            return fail(p, "usage: node NAME [PARENT]");
+        if (close_node(p) != 0 || check_name(p, tok[1]) != 0)
+            return -1;
+        int parent = -1;
+        if (nt == 3) {
+            int v = lookup(s, tok[2]);
+            if (v <= 0)
+                return fail(p, "parent '%s' is not a declared node", tok[2]);
+            parent = v - 1;
+        }
+        if (s->nn >= SC_COUNT_MAX)
+            return fail(p, "more than %d nodes", SC_COUNT_MAX);
+        if (grow((void **)&s->nodes, &s->capn, s->nn + 1, sizeof *s->nodes) != 0)
+            return fail(p, "out of memory");
+        sc_node *n = &s->nodes[s->nn];
+        memset(n, 0, sizeof *n);
+        strcpy(n->name, tok[1]);
+        n->parent = parent;
+        n->first = s->no;
+        n->line = p->line;
+        s->nn++;
+        p->cur = s->nn - 1;
+        p->side = 0;
+        p->n0 = p->n1 = 0;
+        return add_name(p, s->nn);
+    }
+    if (strcmp(w, "translate") == 0 || strcmp(w, "scale") == 0) {
+        double v[3];
+        if (nt != 4)
+            return fail(p, "usage: %s X Y Z", w);
+        if (parse_nums(p, tok + 1, 3, v) != 0)
+            return -1;
+        for (int i = 0; i < 3; i++) {
+            if (w[0] == 't') { a.m[i][i] = 1.0; a.m[i][3] = v[i]; }
+            else a.m[i][i] = v[i];
+        }
+        return add_op(p, &a);
+    }
+    if (strcmp(w, "rotate") == 0) {
+        double v[4], r[3][3];
+        if (nt != 5)
+            return fail(p, "usage: rotate AX AY AZ DEGREES");
+        if (parse_nums(p, tok + 1, 4, v) != 0)
+            return -1;
+        if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
+            return fail(p, "rotation axis is zero");
+        if (!(fabs(v[0]) < 1e150 && fabs(v[1]) < 1e150 && fabs(v[2]) < 1e150 && fabs(v[3]) < 1e15))
+            return fail(p, "rotation axis or angle too large");
+        rotation(v[0], v[1], v[2], v[3], r);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                a.m[i][j] = r[i][j];
+        return add_op(p, &a);
+    }
+    if (strcmp(w, "matrix") == 0) {
+        double v[12];
+        if (nt != 13)
+            return fail(p, "usage: matrix M00 M01 M02 M03 M10 ... M23 (12 numbers, row-major)");
+        if (parse_nums(p, tok + 1, 12, v) != 0)
+            return -1;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 4; j++)
+                a.m[i][j] = v[4 * i + j];
+        return add_op(p, &a);
+    }
+    if (strcmp(w, "motion") == 0) {
+        if (nt != 1)
+            return fail(p, "usage: motion");
+        if (p->cur < 0)
+            return fail(p, "motion outside a node");
+        if (s->nodes[p->cur].motion)
+            return fail(p, "second `motion` in node '%s'", s->nodes[p->cur].name);
+        s->nodes[p->cur].motion = 1;
+        p->side = 1;
+        return 0;
+    }
+    if (strcmp(w, "box") == 0 || strcmp(w, "sphere") == 0 || strcmp(w, "ellipsoid") == 0) {
+        int kind = w[0] == 'b' ? SC_BOX : w[0] == 's' ? SC_SPHERE : SC_ELLIPSOID;
+        int nv = nt - 3;
+        if (kind == SC_BOX && nv != 6)
+            return fail(p, "usage: box NAME NODE LX LY LZ HX HY HZ");
+        if (kind == SC_SPHERE && nv != 4)
+            return fail(p, "usage: sphere NAME NODE CX CY CZ R");
+        if (kind == SC_ELLIPSOID && nv != 6 && nv != 15)
+            return fail(p, "usage: ellipsoid NAME NODE CX CY CZ RX RY RZ [R00 R01 R02 R10 R11 R12 R20 R21 R22]");
+        if (close_node(p) != 0 || check_name(p, tok[1]) != 0)
+            return -1;
+        int v = lookup(s, tok[2]);
+        if (v <= 0)
+            return fail(p, "node '%s' is not declared", tok[2]);
+        sc_leaf L;
+        memset(&L, 0, sizeof L);
+        strcpy(L.name, tok[1]);
+        L.node = v - 1;
+        L.kind = kind;
+        L.line = p->line;
+        if (parse_nums(p, tok + 3, nv, L.v) != 0)
+            return -1;
+        if (kind == SC_BOX)
+            for (int j = 0; j < 3; j++)
+                if (L.v[j] > L.v[3 + j])
+                    return fail(p, "box '%s': lo > hi on axis %d", L.name, j);
+        if (kind == SC_SPHERE && L.v[3] < 0)
+            return fail(p, "sphere '%s': negative radius", L.name);
+        if (kind == SC_ELLIPSOID) {
+            for (int j = 3; j < 6; j++)
+                if (L.v[j] < 0)
+                    return fail(p, "ellipsoid '%s': negative radius", L.name);
+            if (nv == 6)
+                L.v[6] = L.v[10] = L.v[14] = 1.0;
+        }
+        if (s->nl >= SC_COUNT_MAX)
+            return fail(p, "more than %d leaves", SC_COUNT_MAX);
+        if (grow((void **)&s->leaves, &s->capl, s->nl + 1, sizeof *s->leaves) != 0)
+            return fail(p, "out of memory");
+        s->leaves[s->nl++] = L;
+        return add_name(p, -s->nl);
+    }
+    return fail(p, "unknown statement '%s'", w);
+}
+
+int scene_parse(scene *s, const char *text, const char *file, char *err, size_t errlen)
+{
+    parser p;
+    char buf[SC_LINE_MAX + 2];
+    int header = 0;
+    memset(s, 0, sizeof *s);
+    p.s = s; p.file = file; p.line = 0; p.err = err; p.errlen = errlen;
+    p.cur = -1; p.side = 0; p.n0 = p.n1 = 0;
+    const char *q = text;
+    while (*q) {
+        const char *e = strchr(q, '\n');
+        size_t len = e ? (size_t)(e - q) : strlen(q);
+        p.line++;
+        if (len > SC_LINE_MAX) {
+            fail(&p, "line longer than %d characters", SC_LINE_MAX);
+            goto bad;
+        }
+        memcpy(buf, q, len);
+        buf[len] = '\0';
+        q = e ? e + 1 : q + len;
+        char *hash = strchr(buf, '#');
+        if (hash) *hash = '\0';
+        char *tok[32];
+        int nt = 0;
+        char *c = buf;
+        for (;;) {
+            while (*c == ' ' || *c == '\t' || *c == '\r') c++;
+            if (!*c) break;
+            if (nt == 32) { fail(&p, "too many fields"); goto bad; }
+            tok[nt++] = c;
+            while (*c && *c != ' ' && *c != '\t' && *c != '\r') c++;
+            if (*c) *c++ = '\0';
+        }
+        if (nt == 0)
+            continue;
+        if (!header) {
+            if (nt != 2 || strcmp(tok[0], "certbox-scene") != 0 || strcmp(tok[1], "1") != 0) {
+                fail(&p, "the first statement must be `certbox-scene 1`");
+                goto bad;
+            }
+            header = 1;
+            continue;
+        }
+        if (statement(&p, tok, nt) != 0)
+            goto bad;
+    }
+    if (!header) {
+        fail(&p, "empty file: the first statement must be `certbox-scene 1`");
+        goto bad;
+    }
+    if (close_node(&p) != 0)
+        goto bad;
+    if (s->nl == 0) {
+        fail(&p, "the scene has no leaf (box, sphere or ellipsoid)");
+        goto bad;
+    }
+    return 0;
+bad:
+    scene_free(s);
+    return -1;
+}
+
+int scene_load(scene *s, const char *path, char *err, size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    memset(s, 0, sizeof *s);
+    if (!f) {
+        snprintf(err, errlen, "%s:0: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    size_t cap = 1 << 16, n = 0;
+    char *text = malloc(cap + 1);
+    size_t r;
+    while (text && (r = fread(text + n, 1, cap - n, f)) > 0) {
+        n += r;
+        if (n == cap) {
+            char *t2 = cap < ((size_t)1 << 30) ? realloc(text, 2 * cap + 1) : NULL;
+            if (!t2) { free(text); text = NULL; break; }
+            text = t2;
+            cap *= 2;
+        }
+    }
+    int rd_err = ferror(f);
+    fclose(f);
+    if (!text || rd_err) {
+        free(text);
+        snprintf(err, errlen, "%s:0: cannot read the file (or it is above 1 GB)", path);
+        return -1;
+    }
+    text[n] = '\0';
+    if (strlen(text) != n) {
+        free(text);
+        snprintf(err, errlen, "%s:0: the file contains a NUL byte", path);
+        return -1;
+    }
+    int rc = scene_parse(s, text, path, err, errlen);
+    free(text);
+    return rc;
+}
+
+/* ---- evaluation ---------------------------------------------------------- */
+static void worse(cbx_status *acc, cbx_status st)
+{
+    if (scene_severity(st) > scene_severity(*acc))
+        *acc = st;
+}
+
+/* The leaf's own bound in its node's coordinates (exact for a box). */
+static cbx_status leaf_box(const sc_leaf *L, cbx_box *b)
+{
+    if (L->kind == SC_BOX) {
+        for (int j = 0; j < 3; j++) {
+            b->lo[j] = L->v[j];
+            b->hi[j] = L->v[3 + j];
+        }
+        return CBX_OK;
+    }
+    double c[3], r[3], R[3][3];
+    for (int j = 0; j < 3; j++) c[j] = L->v[j];
+    if (L->kind == SC_SPHERE) {
+        r[0] = r[1] = r[2] = L->v[3];
+        memset(R, 0, sizeof R);
+        R[0][0] = R[1][1] = R[2][2] = 1.0;
+    } else {
+        for (int j = 0; j < 3; j++) r[j] = L->v[3 + j];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                R[i][j] = L->v[6 + 3 * i + j];
+    }
+    return cbx_ellipsoid_box(c, r, (const double (*)[3])R, b);
+}
+
+void scene_eval(scene *s)
+{
+    s->st = CBX_OK;
+    for (int j = 0; j < 3; j++) {
+        s->world.lo[j] = HUGE_VAL;
+        s->world.hi[j] = -HUGE_VAL;
+    }
+    for (int k = 0; k < s->nl; k++) {
+        sc_leaf *L = &s->leaves[k];
+        cbx_box b;
+        cbx_status st = leaf_box(L, &b);
+        for (int n = L->node; n >= 0; n = s->nodes[n].parent) {
+            const sc_node *N = &s->nodes[n];
+            if (N->motion) {
+                cbx_box o;
+                worse(&st, cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, &b, &o));
+                b = o;
+            } else {
+                for (int q = N->first + N->n - 1; q >= N->first; q--)
+                    worse(&st, cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, &b, &b));
+            }
+        }
+        L->world = b;
+        L->st = st;
+        worse(&s->st, st);
+        for (int j = 0; j < 3; j++) {
+            if (b.lo[j] < s->world.lo[j]) s->world.lo[j] = b.lo[j];
+            if (b.hi[j] > s->world.hi[j]) s->world.hi[j] = b.hi[j];
+        }
+    }
+}

@@ -1,0 +1,64 @@
+/*
+ * certbox scene files: a node hierarchy of affine transforms with box,
+ * sphere and ellipsoid leaves; world-space bounds of every leaf and of the
+ * scene, level by level through the proven kernels.  Format:
+ * examples/scene-format.md.  Used by the `certbox` tool (main.c) and by
+ * tests/test_scene.c.
+ */
+#ifndef CBX_SCENE_H
+#define CBX_SCENE_H
+
+#include <stddef.h>
+#include "certbox.h"
+
+#define SC_NAME_MAX 64
+#define SC_LINE_MAX 4096
+#define SC_COUNT_MAX 1000000
+
+enum sc_kind { SC_BOX = 0, SC_SPHERE = 1, SC_ELLIPSOID = 2 };
+
+/* One operation: its given double map and its class (computed at load). */
+typedef struct sc_op { cbx_affine a; cbx_class cls; } sc_op;
+
+/* A node: parent (-1 for a root), its operations ops[first .. first+n-1]
+ * in file order (O1 .. On: p_parent = O1(O2(...On(p)))); a motion node
+ * has exactly one operation per side: ops[first] at s = 0 and
+ * ops[first + 1] at s = 1. */
+typedef struct sc_node {
+    char name[SC_NAME_MAX];
+    int parent, first, n, motion, line;
+} sc_node;
+
+/* A leaf: box v[0..5] = lo, hi; sphere v[0..3] = center, radius;
+ * ellipsoid v[0..2] center, v[3..5] radii, v[6..14] orientation (row-major). */
+typedef struct sc_leaf {
+    char name[SC_NAME_MAX];
+    int node, kind, line;
+    double v[15];
+    cbx_box world;      /* set by scene_eval */
+    cbx_status st;      /* most severe status met on the way up */
+} sc_leaf;
+
+typedef struct scene {
+    sc_node *nodes; int nn, capn;
+    sc_op *ops; int no, capo;
+    sc_leaf *leaves; int nl, capl;
+    int *hash; int hcap;          /* name lookup: index+1 of node (>0) or -(leaf+1) */
+    cbx_box world;                /* union of the leaves' world boxes */
+    cbx_status st;                /* most severe leaf status */
+} scene;
+
+/* Parse a whole scene from text (NUL-terminated).  0 on success; else -1
+ * and err holds "FILE:LINE: message" (file is the name used in messages);
+ * on failure nothing is kept (the scene is freed). */
+int scene_parse(scene *s, const char *text, const char *file, char *err, size_t errlen);
+/* Read a file and parse it. */
+int scene_load(scene *s, const char *path, char *err, size_t errlen);
+/* Compute every leaf's world box and the scene box. */
+void scene_eval(scene *s);
+void scene_free(scene *s);
+const char *scene_kind_name(int kind);
+/* Severity order used for "most severe": OK < EMPTY < ERANGE < EINVAL. */
+int scene_severity(cbx_status st);
+
+#endif /* CBX_SCENE_H */

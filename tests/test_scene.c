@@ -1,0 +1,391 @@
+/*
+ * The scene tool against exact rational arithmetic (GMP).
+ *   test_scene FILE...
+ * For every leaf of every scene: the exact product (mpq) of the given
+ * double matrices from the leaf's node to the root, at several times s for
+ * motion nodes (the same s everywhere, and independent s per node), maps
+ *   - every corner of a box leaf inside the world box;
+ *   - a sphere or ellipsoid leaf to c' + A p, |p| <= 1, whose exact extent
+ *     c'_i -+ sqrt(sum_j A_ij^2) must lie inside the world box (checked
+ *     without square roots: d = c'_i - lo_i >= 0 and d^2 >= sum_j A_ij^2).
+ * Tightness: world width / exact width (doubles), max and median.
+ * Then the error handling: broken scenes must be rejected with the right
+ * line number, and the printed %.17g values must parse back exactly.
+ * Exit 1 on any failure.
+ */
+#include <gmp.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "scene.h"
+
+typedef struct qmap { mpq_t m[3][4]; } qmap;   /* y = M x + T, exact */
+
+static void qm_init(qmap *q)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            mpq_init(q->m[i][j]);
+}
+static void qm_clear(qmap *q)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            mpq_clear(q->m[i][j]);
+}
+static void qm_ident(qmap *q)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            mpq_set_si(q->m[i][j], i == j, 1);
+}
+/* q = (1 - s) a0 + s a1, exactly (s = 0: a0) */
+static void qm_from(qmap *q, const cbx_affine *a0, const cbx_affine *a1, const mpq_t s)
+{
+    mpq_t x, y, one_s;
+    mpq_inits(x, y, one_s, NULL);
+    mpq_set_ui(one_s, 1, 1);
+    mpq_sub(one_s, one_s, s);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            mpq_set_d(x, a0->m[i][j]);
+            mpq_mul(q->m[i][j], x, one_s);
+            if (a1) {
+                mpq_set_d(y, a1->m[i][j]);
+                mpq_mul(y, y, s);
+                mpq_add(q->m[i][j], q->m[i][j], y);
+            }
+        }
+    mpq_clears(x, y, one_s, NULL);
+}
+/* r = a o b (apply b first); r may not alias a or b */
+static void qm_compose(qmap *r, const qmap *a, const qmap *b)
+{
+    mpq_t t;
+    mpq_init(t);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            mpq_set_ui(r->m[i][j], 0, 1);
+            for (int k = 0; k < 3; k++) {
+                mpq_mul(t, a->m[i][k], b->m[k][j]);
+                mpq_add(r->m[i][j], r->m[i][j], t);
+            }
+            if (j == 3)
+                mpq_add(r->m[i][j], r->m[i][j], a->m[i][3]);
+        }
+    mpq_clear(t);
+}
+
+typedef struct stats { long leaves, checks, fails, ratios_n, ratios_cap; double *ratios; } stats;
+
+static void add_ratio(stats *st, double r)
+{
+    if (st->ratios_n == st->ratios_cap) {
+        st->ratios_cap = st->ratios_cap ? 2 * st->ratios_cap : 256;
+        st->ratios = realloc(st->ratios, (size_t)st->ratios_cap * sizeof *st->ratios);
+        if (!st->ratios) { fprintf(stderr, "out of memory\n"); exit(2); }
+    }
+    st->ratios[st->ratios_n++] = r;
+}
+
+/* Check one leaf under the exact world map W. */
+static void check_leaf(const sc_leaf *L, const qmap *W, stats *st, const char *file, int tight)
+{
+    mpq_t v, t, lo, hi, d, sum;
+    mpq_inits(v, t, lo, hi, d, sum, NULL);
+    for (int i = 0; i < 3; i++) {
+        mpq_set_d(lo, L->world.lo[i]);
+        mpq_set_d(hi, L->world.hi[i]);
+        int lofin = isfinite(L->world.lo[i]), hifin = isfinite(L->world.hi[i]);
+        if (L->kind == SC_BOX) {
+            double emin = HUGE_VAL, emax = -HUGE_VAL;
+            for (int c = 0; c < 8; c++) {
+                mpq_set(v, W->m[i][3]);
+                for (int j = 0; j < 3; j++) {
+                    mpq_set_d(t, L->v[((c >> j) & 1) ? 3 + j : j]);
+                    mpq_mul(t, t, W->m[i][j]);
+                    mpq_add(v, v, t);
+                }
+                st->checks++;
+                if ((lofin && mpq_cmp(v, lo) < 0) || (hifin && mpq_cmp(v, hi) > 0)) {
+                    st->fails++;
+                    fprintf(stderr, "FAIL %s: leaf %s axis %d corner %d outside [%a, %a]\n",
+                            file, L->name, i, c, L->world.lo[i], L->world.hi[i]);
+                }
+                double vd = mpq_get_d(v);
+                if (vd < emin) emin = vd;
+                if (vd > emax) emax = vd;
+            }
+            if (tight && lofin && hifin && emax > emin)
+                add_ratio(st, (L->world.hi[i] - L->world.lo[i]) / (emax - emin));
+        } else {
+            /* A = W_lin R diag(r); c' = W c + T */
+            double r[3], R[3][3];
+            if (L->kind == SC_SPHERE) {
+                r[0] = r[1] = r[2] = L->v[3];
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++)
+                        R[a][b] = a == b;
+            } else {
+                for (int a = 0; a < 3; a++) r[a] = L->v[3 + a];
+                for (int a = 0; a < 3; a++)
+                    for (int b = 0; b < 3; b++)
+                        R[a][b] = L->v[6 + 3 * a + b];
+            }
+            mpq_set_ui(sum, 0, 1);
+            for (int j = 0; j < 3; j++) {
+                mpq_set_ui(v, 0, 1);
+                for (int k = 0; k < 3; k++) {
+                    mpq_set_d(t, R[k][j]);
+                    mpq_mul(t, t, W->m[i][k]);
+                    mpq_add(v, v, t);
+                }
+                mpq_set_d(t, r[j]);
+                mpq_mul(v, v, t);
+                mpq_mul(v, v, v);
+                mpq_add(sum, sum, v);
+            }
+            mpq_set(v, W->m[i][3]);
+            for (int j = 0; j < 3; j++) {
+                mpq_set_d(t, L->v[j]);
+                mpq_mul(t, t, W->m[i][j]);
+                mpq_add(v, v, t);
+            }
+            st->checks++;
+            int bad = 0;
+            if (lofin) {
+                mpq_sub(d, v, lo);
+                if (mpq_sgn(d) < 0) bad = 1;
+                mpq_mul(d, d, d);
+                if (mpq_cmp(d, sum) < 0) bad = 1;
+            }
+            if (hifin) {
+                mpq_sub(d, hi, v);
+                if (mpq_sgn(d) < 0) bad = 1;
+                mpq_mul(d, d, d);
+                if (mpq_cmp(d, sum) < 0) bad = 1;
+            }
+            if (bad) {
+                st->fails++;
+                fprintf(stderr, "FAIL %s: leaf %s axis %d: exact ellipsoid extent outside [%a, %a]\n",
+                        file, L->name, i, L->world.lo[i], L->world.hi[i]);
+            }
+            double ew = 2.0 * sqrt(mpq_get_d(sum));
+            if (tight && lofin && hifin && ew > 0)
+                add_ratio(st, (L->world.hi[i] - L->world.lo[i]) / ew);
+        }
+    }
+    mpq_clears(v, t, lo, hi, d, sum, NULL);
+}
+
+/* The exact map of node n (its operations composed, motion at time s). */
+static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
+{
+    const sc_node *N = &s->nodes[n];
+    qmap a, r;
+    qm_init(&a);
+    qm_init(&r);
+    if (N->motion) {
+        qm_from(out, &s->ops[N->first].a, &s->ops[N->first + 1].a, tm);
+    } else {
+        mpq_t zero;
+        mpq_init(zero);
+        qm_ident(out);
+        for (int q = N->first; q < N->first + N->n; q++) {   /* out = out o op */
+            qm_from(&a, &s->ops[q].a, NULL, zero);
+            qm_compose(&r, out, &a);
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 4; j++)
+                    mpq_set(out->m[i][j], r.m[i][j]);
+        }
+        mpq_clear(zero);
+    }
+    qm_clear(&a);
+    qm_clear(&r);
+}
+
+static unsigned long rng_state = 88172645463325252UL;
+static unsigned long rnd(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return rng_state;
+}
+
+static int check_file(const char *file, stats *st, long *times_total)
+{
+    scene s;
+    char err[512];
+    if (scene_load(&s, file, err, sizeof err) != 0) {
+        fprintf(stderr, "FAIL %s: %s\n", err, "scene not loaded");
+        return 1;
+    }
+    scene_eval(&s);
+    int has_motion = 0;
+    for (int n = 0; n < s.nn; n++) has_motion |= s.nodes[n].motion;
+    /* time samples: shared s in {0, 1/4, 1/3, 1/2, 1}, then 8 draws with an
+     * independent random s per node */
+    static const long num[5] = {0, 1, 1, 1, 1}, den[5] = {1, 4, 3, 2, 1};
+    int ntimes = has_motion ? 13 : 1;
+    mpq_t *tm = malloc((size_t)(s.nn > 0 ? s.nn : 1) * sizeof *tm);
+    for (int n = 0; n < s.nn; n++) mpq_init(tm[n]);
+    qmap W, N, R;
+    qm_init(&W); qm_init(&N); qm_init(&R);
+    for (int k = 0; k < ntimes; k++) {
+        for (int n = 0; n < s.nn; n++) {
+            if (k < 5) mpq_set_si(tm[n], num[k], (unsigned long)den[k]);
+            else mpq_set_ui(tm[n], rnd() % 1001, 1000);
+            mpq_canonicalize(tm[n]);
+        }
+        (*times_total)++;
+        for (int l = 0; l < s.nl; l++) {
+            const sc_leaf *L = &s.leaves[l];
+            qm_ident(&W);
+            for (int n = L->node; n >= 0; n = s.nodes[n].parent) {   /* W = N o W */
+                node_map(&s, n, tm[n], &N);
+                qm_compose(&R, &N, &W);
+                for (int i = 0; i < 3; i++)
+                    for (int j = 0; j < 4; j++)
+                        mpq_set(W.m[i][j], R.m[i][j]);
+            }
+            check_leaf(L, &W, st, file, k == 0 && !has_motion);
+        }
+    }
+    st->leaves += s.nl;
+    for (int n = 0; n < s.nn; n++) mpq_clear(tm[n]);
+    free(tm);
+    qm_clear(&W); qm_clear(&N); qm_clear(&R);
+    /* every leaf proven, and the scene box the union */
+    int bad = 0;
+    for (int l = 0; l < s.nl; l++) {
+        if (s.leaves[l].st != CBX_OK) {
+            fprintf(stderr, "FAIL %s: leaf %s status %s\n", file, s.leaves[l].name,
+                    cbx_status_name(s.leaves[l].st));
+            bad = 1;
+        }
+        for (int j = 0; j < 3; j++)
+            if (s.leaves[l].world.lo[j] < s.world.lo[j] || s.leaves[l].world.hi[j] > s.world.hi[j]) {
+                fprintf(stderr, "FAIL %s: scene box does not hold leaf %s\n", file, s.leaves[l].name);
+                bad = 1;
+            }
+        /* the tool prints %.17g: it must parse back to the same double */
+        for (int j = 0; j < 3; j++) {
+            char b[64];
+            double x[2] = {s.leaves[l].world.lo[j], s.leaves[l].world.hi[j]};
+            for (int e = 0; e < 2; e++) {
+                snprintf(b, sizeof b, "%.17g", x[e]);
+                if (strtod(b, NULL) != x[e]) {
+                    fprintf(stderr, "FAIL %s: %.17g does not round-trip\n", file, x[e]);
+                    bad = 1;
+                }
+            }
+        }
+    }
+    scene_free(&s);
+    return bad;
+}
+
+static int cmp_d(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Broken scenes: each must be rejected, naming the expected line. */
+static int check_errors(int *count)
+{
+    static const struct { const char *text; int line; } bad[] = {
+        {"", 0},
+        {"# only a comment\n", 1},
+        {"certbox-scene 2\n", 1},
+        {"node a\nbox b a 0 0 0 1 1 1\n", 1},
+        {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1\n", 3},
+        {"certbox-scene 1\nnode a\n  translate 1 2\nbox b a 0 0 0 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a b\nbox b a 0 0 0 1 1 1\n", 2},
+        {"certbox-scene 1\nnode a\nnode a\nbox b a 0 0 0 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 1\nbox b a 0 0 0 1 1 1\n", 4},
+        {"certbox-scene 1\nnode a\nbox b a 1 0 0 0 1 1\n", 3},
+        {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 1x\n", 3},
+        {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 inf\n", 3},
+        {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 nan\n", 3},
+        {"certbox-scene 1\nnode a\nsphere b a 0 0 0 -1\n", 3},
+        {"certbox-scene 1\nnode a\n  rotate 0 0 0 30\nbox b a 0 0 0 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a\n  translate 1 0 0\n  translate 1 0 0\n  motion\n  translate 2 0 0\nbox b a 0 0 0 1 1 1\n", 2},
+        {"certbox-scene 1\nnode a\n  motion\n  motion\nbox b a 0 0 0 1 1 1\n", 4},
+        {"certbox-scene 1\ntranslate 1 0 0\n", 2},
+        {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 1\n  translate 1 0 0\n", 4},
+        {"certbox-scene 1\nnode a\nfrobnicate\n", 3},
+        {"certbox-scene 1\nnode a\nbox b zz 0 0 0 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a$\nbox b a 0 0 0 1 1 1\n", 2},
+        {"certbox-scene 1\nnode a\n", 2},
+        {"certbox-scene 1\nnode a\nellipsoid e a 0 0 0 1 1\n", 3},
+    };
+    int fails = 0;
+    char err[512], want[32];
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        scene s;
+        int rc = scene_parse(&s, bad[k].text, "t.scene", err, sizeof err);
+        snprintf(want, sizeof want, "t.scene:%d:", bad[k].line);
+        if (rc == 0) {
+            fprintf(stderr, "FAIL error case %zu accepted\n", k);
+            scene_free(&s);
+            fails++;
+        } else if (strncmp(err, want, strlen(want)) != 0) {
+            fprintf(stderr, "FAIL error case %zu: message '%s', expected line %d\n", k, err, bad[k].line);
+            fails++;
+        } else if (s.nl != 0 || s.nn != 0) {
+            fprintf(stderr, "FAIL error case %zu: scene kept after an error\n", k);
+            fails++;
+        }
+        (*count)++;
+    }
+    /* a long line is refused, not overflowed */
+    size_t n = SC_LINE_MAX + 100;
+    char *t = malloc(n + 64);
+    strcpy(t, "certbox-scene 1\nnode a\n");
+    size_t at = strlen(t);
+    memset(t + at, ' ', n);
+    strcpy(t + at + n, "\n");
+    scene s;
+    if (scene_parse(&s, t, "t.scene", err, sizeof err) == 0 || strncmp(err, "t.scene:3:", 10) != 0) {
+        fprintf(stderr, "FAIL long line not refused at line 3: %s\n", err);
+        fails++;
+    }
+    free(t);
+    (*count)++;
+    return fails;
+}
+
+int main(int argc, char **argv)
+{
+    stats st;
+    memset(&st, 0, sizeof st);
+    long times = 0;
+    int bad = 0;
+    if (argc < 2) {
+        fprintf(stderr, "usage: test_scene FILE...\n");
+        return 2;
+    }
+    for (int k = 1; k < argc; k++)
+        bad |= check_file(argv[k], &st, &times);
+    int nerr = 0;
+    int efails = check_errors(&nerr);
+    double mx = 0, med = 0;
+    if (st.ratios_n) {
+        qsort(st.ratios, (size_t)st.ratios_n, sizeof *st.ratios, cmp_d);
+        mx = st.ratios[st.ratios_n - 1];
+        med = st.ratios[st.ratios_n / 2];
+    }
+    printf("test_scene: %d files, %ld leaves, %ld scene evaluations at sampled times, "
+           "%ld exact containment checks, %ld failures\n",
+           argc - 1, st.leaves, times, st.checks, st.fails);
+    printf("test_scene: tightness (world width / exact width, static scenes, %ld axes): "
+           "max %.6f median %.9f\n", st.ratios_n, mx, med);
+    printf("test_scene: %d broken scenes, %d not rejected at the right line\n", nerr, efails);
+    free(st.ratios);
+    int failed = bad || st.fails || efails || st.checks == 0;
+    printf("%s\n", failed ? "test_scene: FAILED" : "test_scene: passed");
+    return failed ? 1 : 0;
+}
