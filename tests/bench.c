@@ -212,20 +212,9 @@ static double urand(xu_rng *r, double lo, double hi)
 
 static void gen_case(xu_rng *r, cbx_affine *a, cbx_box *b)
 {
-    double q[4], n2, R[3][3], s[3];
+    double R[3][3], s[3];
     int i, j;
-    do { /* uniform unit quaternion by rejection */
-        for (i = 0; i < 4; i++) q[i] = urand(r, -1.0, 1.0);
-        n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-    } while (n2 > 1.0 || n2 < 1e-6);
-    n2 = sqrt(n2);
-    for (i = 0; i < 4; i++) q[i] /= n2;
-    {
-        double w = q[0], x = q[1], y = q[2], z = q[3];
-        R[0][0] = 1 - 2 * (y * y + z * z); R[0][1] = 2 * (x * y - w * z); R[0][2] = 2 * (x * z + w * y);
-        R[1][0] = 2 * (x * y + w * z); R[1][1] = 1 - 2 * (x * x + z * z); R[1][2] = 2 * (y * z - w * x);
-        R[2][0] = 2 * (x * z - w * y); R[2][1] = 2 * (y * z + w * x); R[2][2] = 1 - 2 * (x * x + y * y);
-    }
+    xu_rand_rotation(r, R);
     for (j = 0; j < 3; j++) {
         s[j] = pow(2.0, urand(r, -4.0, 4.0));
         if (xu_rng_int(r, 0, 9) == 0) s[j] = -s[j];

@@ -1063,3 +1063,26 @@ unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long d
     }
     return v;
 }
+
+void xu_rand_rotation(xu_rng *r, double R[3][3])
+{
+    double w, x, y, z, n;
+    do {
+        w = 2 * xu_rng_unit(r) - 1;
+        x = 2 * xu_rng_unit(r) - 1;
+        y = 2 * xu_rng_unit(r) - 1;
+        z = 2 * xu_rng_unit(r) - 1;
+        n = w * w + x * x + y * y + z * z;
+    } while (n > 1 || n < 1e-6);
+    n = sqrt(n);
+    w /= n; x /= n; y /= n; z /= n;
+    R[0][0] = 1 - 2 * (y * y + z * z);
+    R[0][1] = 2 * (x * y - w * z);
+    R[0][2] = 2 * (x * z + w * y);
+    R[1][0] = 2 * (x * y + w * z);
+    R[1][1] = 1 - 2 * (x * x + z * z);
+    R[1][2] = 2 * (y * z - w * x);
+    R[2][0] = 2 * (x * z - w * y);
+    R[2][1] = 2 * (y * z + w * x);
+    R[2][2] = 1 - 2 * (x * x + y * y);
+}

@@ -344,6 +344,9 @@ double xu_rng_unit(xu_rng *r);                      /* [0, 1), 53 bits     */
  * emin <= -1022), otherwise a full mantissa with exponent in [emin, emax). */
 double xu_gen_mag(xu_rng *r, int emin, int emax);
 double xu_gen_signed(xu_rng *r, int emin, int emax); /* with -0.0 */
+/* A uniformly random rotation: a unit quaternion drawn by rejection from
+ * [-1, 1)^4 (four xu_rng_unit draws per try), then its rotation matrix. */
+void xu_rand_rotation(xu_rng *r, double R[3][3]);
 
 /* Command-line argument n as an unsigned number (decimal, 0x.. hex), or
  * dflt when absent; anything else prints "usage: PROG usage" and exits 2. */

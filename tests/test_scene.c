@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "scene.h"
+#include "exact_util.h"
 
 typedef struct qmap { mpq_t m[3][4]; } qmap;   /* y = M x + T, exact */
 
@@ -205,14 +206,7 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
     qm_clear(&r);
 }
 
-static unsigned long rng_state = 88172645463325252UL;
-static unsigned long rnd(void)
-{
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return rng_state;
-}
+static xu_rng rng = {88172645463325252u};
 
 static int check_file(const char *file, stats *st, long *times_total)
 {
@@ -236,7 +230,7 @@ static int check_file(const char *file, stats *st, long *times_total)
     for (int k = 0; k < ntimes; k++) {
         for (int n = 0; n < s.nn; n++) {
             if (k < 5) mpq_set_si(tm[n], num[k], (unsigned long)den[k]);
-            else mpq_set_ui(tm[n], rnd() % 1001, 1000);
+            else mpq_set_ui(tm[n], (unsigned long)xu_rng_int(&rng, 0, 1000), 1000);
             mpq_canonicalize(tm[n]);
         }
         (*times_total)++;

@@ -886,30 +886,6 @@ static const ell_case ell_hard[] = {
 /* Random generation                                                      */
 /* ---------------------------------------------------------------------- */
 
-/* a rotation from a random unit quaternion (computed in double) */
-static void gen_rotation(xu_rng *r, double R[3][3])
-{
-    double w, x, y, z, n;
-    do {
-        w = 2 * xu_rng_unit(r) - 1;
-        x = 2 * xu_rng_unit(r) - 1;
-        y = 2 * xu_rng_unit(r) - 1;
-        z = 2 * xu_rng_unit(r) - 1;
-        n = w * w + x * x + y * y + z * z;
-    } while (n > 1 || n < 1e-6);
-    n = sqrt(n);
-    w /= n; x /= n; y /= n; z /= n;
-    R[0][0] = 1 - 2 * (y * y + z * z);
-    R[0][1] = 2 * (x * y - w * z);
-    R[0][2] = 2 * (x * z + w * y);
-    R[1][0] = 2 * (x * y + w * z);
-    R[1][1] = 1 - 2 * (x * x + z * z);
-    R[1][2] = 2 * (y * z - w * x);
-    R[2][0] = 2 * (x * z - w * y);
-    R[2][1] = 2 * (y * z + w * x);
-    R[2][2] = 1 - 2 * (x * x + y * y);
-}
-
 /* a rotation by a tiny angle (1e-8 .. 1e-300) about a random axis */
 static void gen_tiny_rotation(xu_rng *r, double R[3][3])
 {
@@ -930,7 +906,7 @@ static void gen_linear(xu_rng *r, double L[3][3], int emax)
     if (mode < 40) { /* rotation times one scale or per-column scales */
         int per_col = xu_rng_int(r, 0, 1), e = xu_rng_int(r, -1074, emax - 1);
         double sc[3];
-        gen_rotation(r, L);
+        xu_rand_rotation(r, L);
         for (j = 0; j < 3; j++)
             sc[j] = per_col ? xu_gen_mag(r, -1074, emax - 1) : ldexp(1.0, e);
         for (i = 0; i < 3; i++)
@@ -1034,7 +1010,7 @@ static void gen_ellipsoid(xu_rng *r, ctx *k, problem *P)
     memset(P, 0, sizeof *P);
     P->ell = 1;
     if (mode < 6) { /* a rotation, optionally scaled */
-        if (xu_rng_int(r, 0, 3)) gen_rotation(r, L);
+        if (xu_rng_int(r, 0, 3)) xu_rand_rotation(r, L);
         else gen_tiny_rotation(r, L);
         if (xu_rng_int(r, 0, 2) == 0) {
             double sc = ldexp(1.0, xu_rng_int(r, -1074, 253));
