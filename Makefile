@@ -25,8 +25,11 @@ ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Isrc
 SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 B := build
-LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c
-HEADERS := src/certbox.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+# binary64 sources; the *_f.c files instantiate the same sources for binary32
+LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c \
+           src/cbx_interval_f.c src/cbx_center_f.c src/cbx_convert_f.c src/cbx_sphere_f.c src/cbx_batch_f.c \
+           src/cbx_ieee.c src/cbx_ieee_f.c
+HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 SONAME  := libcertbox.so.$(SOVERSION)
@@ -79,7 +82,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee
 test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -92,6 +95,8 @@ test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_batch 200 1
 	./$(B)/test_tight 150 1
 	./$(B)/test_classes 200000 1
+	./$(B)/test_float 200000 1
+	./$(B)/test_ieee
 	./$(B)/test_scene examples/*.scene
 	for f in examples/*.scene; do ./$(B)/certbox $$f > /dev/null || exit 1; done
 	! ./$(B)/certbox examples/scene-format.md > /dev/null 2>&1
@@ -109,12 +114,35 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_batch 200 2
 	./$(B)/san/test_tight 50 2
 	./$(B)/san/test_classes 50000 2
+	./$(B)/san/test_float 50000 2
+	./$(B)/san/test_ieee
 	./$(B)/san/test_scene examples/*.scene
 
-# The public header compiles as C99, C11 and C++.
+# Cortex-M4F and Cortex-M7, freestanding (arm-none-eabi-gcc): no libc beyond
+# sqrt, code size and worst-case stack per function (build/embedded/report.md).
+.PHONY: embedded check-cross
+embedded:
+	@sh scripts/deps.sh embedded
+	python3 scripts/embedded.py
+
+# The exact test suites on 32-bit ARM under qemu-user, output compared line
+# by line with this machine's (scripts/cross.sh).
+check-cross: $(TESTS:%=$(B)/test_%)
+	@sh scripts/deps.sh cross
+	sh scripts/cross.sh
+
+# The IEEE build check (cbx_ieee_check) and its teeth: bad flags and bad
+# run-time modes must be caught, -ffast-math and x87 refused (scripts/ieee.sh).
+.PHONY: ieee-check
+ieee-check: all
+	sh scripts/ieee.sh $(CC)
+
+# The public header compiles as C99, C11 and C++; the binary32 name list is
+# up to date and no macro of the precision tables leaks past certbox.h.
 header-check:
 	@mkdir -p $(B)
-	printf '#include "certbox.h"\nint main(void){cbx_box b; (void)b; return 0;}\n' > $(B)/hc.c
+	python3 scripts/names.py --check
+	printf '#include "certbox.h"\n#if defined(cbx_fp) || defined(CBX_INST) || defined(CBX_U) || defined(cbx_boxf) || defined(has_nan)\n#error leak\n#endif\nint main(void){cbx_box b; cbx_boxf f; (void)b; (void)f; return 0;}\n' > $(B)/hc.c
 	$(CC) -std=c99 $(WARN) -Isrc -c $(B)/hc.c -o $(B)/hc.o
 	$(CC) -std=c11 $(WARN) -Isrc -c $(B)/hc.c -o $(B)/hc.o
 	cp $(B)/hc.c $(B)/hc.cc && $(CXX) -std=c++11 $(WARN) -Isrc -c $(B)/hc.cc -o $(B)/hc.o
@@ -126,6 +154,26 @@ proof: check-deps-proof
 proof-check: check-deps-proof
 	sh proofs/run.sh --check
 
+# The evidence pack (evidence/: claims, proof, tests, coverage, coding
+# standard, tools, hashes; scripts/evidence.py), and its reproducibility:
+# evidence-check makes the pack twice and compares them.
+.PHONY: evidence evidence-check
+evidence: all
+	@sh scripts/deps.sh evidence
+	python3 scripts/evidence.py evidence
+evidence-check: all $(TESTS:%=$(B)/test_%)
+	@sh scripts/deps.sh evidence
+	python3 scripts/evidence.py evidence > $(B)/evidence-1.log 2>&1 & p=$$!; \
+	python3 scripts/evidence.py $(B)/evidence-2 > $(B)/evidence-2.log 2>&1; s2=$$?; \
+	wait $$p; s1=$$?; cat $(B)/evidence-1.log; tail -3 $(B)/evidence-2.log; \
+	[ $$s1 = 0 ] && [ $$s2 = 0 ]
+	python3 scripts/evidence.py --compare evidence $(B)/evidence-2
+
+# Do the smoke tests catch inconsistent contracts at their step budget?
+.PHONY: smoke-teeth
+smoke-teeth: check-deps-proof
+	sh scripts/smoke_teeth.sh
+
 check-deps-test:
 	@sh scripts/deps.sh test
 check-deps:
@@ -133,43 +181,48 @@ check-deps:
 check-deps-proof:
 	@sh scripts/deps.sh proof
 
-# Each step stops the run on failure; the last line counts the suites.
+# Each step stops the run on failure; the last line counts the steps.
+# Independent steps run two at a time (each is single-threaded; the proofs
+# and the smoke teeth use both cores on their own).
 check: check-deps
-	$(MAKE) all
+	$(MAKE) -j2 all $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
 	$(MAKE) header-check
-	$(MAKE) test
-	$(MAKE) test-san
-	$(MAKE) bench-smoke
-	$(MAKE) install-check
-	$(MAKE) fuzz-check
+	$(MAKE) -j2 test test-san
+	$(MAKE) -j2 ieee-check bench-smoke install-check embedded
+	$(MAKE) -j2 fuzz-check check-cross
 	$(MAKE) proof-check
-	@echo "check: 11 passed, 0 failed"
+	$(MAKE) smoke-teeth
+	$(MAKE) evidence-check
+	@echo "check: 13 passed, 0 failed"
 
 # make install into a scratch DESTDIR, then build a program against it
 # with pkg-config, static and shared.
 install-check: all
 	rm -rf $(B)/stage
 	$(MAKE) install DESTDIR=$(CURDIR)/$(B)/stage PREFIX=/opt/certbox
-	printf '#include <certbox.h>\n#include <stdio.h>\nint main(void){cbx_affine a={{{1,0,0,1},{0,1,0,2},{0,0,1,3}}};cbx_box b={{0,0,0},{1,1,1}},o;int s=cbx_transform_box(&a,&b,&o);printf("%%s %%g %%g\\n",cbx_status_name(s),o.lo[0],o.hi[0]);return s;}\n' > $(B)/ic.c
+	printf '#include <certbox.h>\n#include <stdio.h>\nint main(void){cbx_affine a={{{1,0,0,1},{0,1,0,2},{0,0,1,3}}};cbx_box b={{0,0,0},{1,1,1}},o;cbx_affinef af={{{1,0,0,1},{0,1,0,2},{0,0,1,3}}};cbx_boxf bf={{0,0,0},{1,1,1}},of;int s=cbx_transform_box(&a,&b,&o),t=cbx_transform_boxf(&af,&bf,&of);unsigned c=cbx_ieee_check();printf("%%s %%g %%g; %%s %%g %%g; ieee %%u\\n",cbx_status_name(s),o.lo[0],o.hi[0],cbx_status_name(t),(double)of.lo[0],(double)of.hi[0],c);return s||t||c;}\n' > $(B)/ic.c
 	PKG_CONFIG_SYSROOT_DIR=$(CURDIR)/$(B)/stage PKG_CONFIG_LIBDIR=$(CURDIR)/$(B)/stage/opt/certbox/lib/pkgconfig \
 	  sh -c '$(CC) -std=c99 $(WARN) $(B)/ic.c $$(pkg-config --cflags --libs certbox) -o $(B)/ic && LD_LIBRARY_PATH=$(CURDIR)/$(B)/stage/opt/certbox/lib ./$(B)/ic'
 	test -L $(B)/stage/opt/certbox/lib/libcertbox.so.$(SOVERSION)
 
 # ---- install -------------------------------------------------------------
+# certbox.h and what it includes (both families' API, the precision tables,
+# and the ACSL logic that Frama-C users of the contracts need).
+PUBHDR := src/certbox.h src/cbx_api.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h \
+          specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 install: all
 	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCDIR) $(DESTDIR)$(PCDIR)
 	install -m 644 $(B)/libcertbox.a $(DESTDIR)$(LIBDIR)/
 	install -m 755 $(B)/libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/libcertbox.so
-	install -m 644 src/certbox.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h $(DESTDIR)$(INCDIR)/
+	install -m 644 $(PUBHDR) $(DESTDIR)$(INCDIR)/
 	sed -e 's#@PREFIX@#$(PREFIX)#' -e 's#@LIBDIR@#$(LIBDIR)#' -e 's#@INCDIR@#$(INCDIR)#' \
 	    -e 's#@VERSION@#$(VERSION)#' certbox.pc.in > $(DESTDIR)$(PCDIR)/certbox.pc
 
 uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
-	      $(DESTDIR)$(INCDIR)/certbox.h $(DESTDIR)$(INCDIR)/cbx_spec.h \
-	      $(DESTDIR)$(INCDIR)/cbx_ball.h $(DESTDIR)$(INCDIR)/cbx_class.h $(DESTDIR)$(PCDIR)/certbox.pc
+	      $(addprefix $(DESTDIR)$(INCDIR)/,$(notdir $(PUBHDR))) $(DESTDIR)$(PCDIR)/certbox.pc
 
 # libFuzzer harnesses with the exact GMP oracle (tests/fuzz/); needs clang.
 fuzz: check-deps-test

@@ -1,5 +1,8 @@
-/* The whole library as one translation unit, for Frama-C: the static inline
- * primitives of the internal headers then exist (and are proven) once. */
+/* The binary64 library as one translation unit, for Frama-C: the static
+ * inline primitives of the internal headers then exist (and are proven)
+ * once.  CBX_FRAMAC_ONLY_64 keeps the binary32 logic out of the provers'
+ * context (certbox.h). */
+#define CBX_FRAMAC_ONLY_64 1
 #include "cbx_interval.c"
 #include "cbx_center.c"
 #include "cbx_convert.c"

@@ -1,5 +1,8 @@
-/* The ACSL lemmas of specs/cbx_spec.h and specs/cbx_ball.h, proven on their own
- * (pass L of proofs/run.sh): this file has no function, so WP's goals are the lemmas. */
+/* The ACSL lemmas of the binary64 family (specs/cbx_logic.h, cbx_ball.h,
+ * the binary64 instance of cbx_spec.h, cbx_class.h), proven on their own
+ * (pass L of proofs/run.sh): this file has no function, so WP's goals are
+ * the lemmas. */
+#define CBX_FRAMAC_ONLY_64 1
 #include "certbox.h"
 
 #include "cbx_eft.h"

@@ -1,52 +1,47 @@
 #!/usr/bin/env python3
-"""Summarise a Frama-C/WP log as proofs/report.md (per function: proved/total,
-provers, time).  Usage: report.py wp.log smoke.log main_seconds smoke_seconds"""
+"""Summarise the Frama-C/WP logs of proofs/run.sh as proofs/report.md.
+
+Usage: report.py OUTDIR WALL_SECONDS
+OUTDIR holds wp-JOB.log and wp-JOB.time for every job of proofs/job.sh.
+Per family (binary64, binary32) and function: proved/total, provers, prover
+time; per job: goals and wall time; the smoke tests; RESULT: PROVED only
+when every job finished, every goal is proved and no smoke test failed.
+"""
+import glob
 import os
 import re
 import subprocess
 import sys
 
 GOAL = re.compile(r'^\[wp\] \[([^\]]+)\] Goal (\S+) : (\w+)(.*)$')
-FAIL = re.compile(r'^\[wp\] \[(Failed|Unsuccess|Timeout|Unknown)\] Goal (\S+)')
+FAIL = re.compile(r'^\[wp\] \[(Failed|Unsuccess|Timeout|Unknown|Stepout)\] Goal (\S+)')
 TIME = re.compile(r'\((\d+(?:\.\d+)?)(ms|s)\)')
+SMOKE = re.compile(r'^\[wp\] \[(\w+)\] Smoke-test (\S+)', re.M)
+JOBS = {
+    'L64': 'binary64 lemmas', 'L32': 'binary32 lemmas',
+    'A64': 'binary64 primitives and kernels (-wp-split)',
+    'A32': 'binary32 primitives and kernels (-wp-split)',
+    'B64a': 'binary64 tight mode, classes, motion, batch',
+    'B64b': 'binary64 public functions and helpers',
+    'B32': 'binary32 public functions and helpers',
+    'S64': 'binary64 smoke tests', 'S32': 'binary32 smoke tests',
+}
+FAMILY = {'64': 'binary64 (double): `cbx_transform_box`, ...',
+          '32': 'binary32 (float): `cbx_transform_boxf`, ... (same sources)'}
 
 
 def functions(log):
-    names = set(re.findall(r'annotating function (\w+)', log))
-    names |= set(re.findall(r'^\[wp\] .*Goal typed_lemma_(\w+)', log, re.M) and ['lemma'])
-    return sorted(names, key=len, reverse=True)
+    return sorted(set(re.findall(r'annotating function (\w+)', log)), key=len, reverse=True)
 
 
 def owner(goal, names):
     g = goal[len('typed_'):] if goal.startswith('typed_') else goal
     if g.startswith('lemma_'):
-        return 'lemmas (specs/cbx_spec.h, specs/cbx_ball.h, specs/cbx_class.h)'
+        return '(lemmas)'
     for n in names:
         if g.startswith(n + '_'):
             return n
     return '(other)'
-
-
-def parse(path):
-    text = open(path, encoding='utf-8', errors='replace').read()
-    names = functions(text)
-    goals = {}
-    lines = text.splitlines()
-    for i, line in enumerate(lines):
-        m = GOAL.match(line)
-        if m and m.group(1) not in ('Failed', 'Unsuccess'):
-            prover, goal, status, rest = m.groups()
-            secs = 0.0
-            times = TIME.findall(rest)
-            if times:
-                v, unit = times[-1]
-                secs = float(v) / (1000.0 if unit == 'ms' else 1.0)
-            goals[goal] = (status == 'Valid', prover, secs)
-            continue
-        m = FAIL.match(line)
-        if m:
-            goals[m.group(2)] = (False, 'none', 0.0)
-    return text, names, goals
 
 
 def tool(cmd):
@@ -56,64 +51,124 @@ def tool(cmd):
         return 'unknown'
 
 
-def main():
-    wp_log, smoke_log, t_main, t_smoke = sys.argv[1:5]
-    text, names, goals = parse(wp_log)
-    smoke = {g: v for g, v in goals.items() if 'smoke' in g}
-    goals = {g: v for g, v in goals.items() if 'smoke' not in g}
-    per = {}
-    for g, (ok, prover, secs) in goals.items():
-        f = owner(g, names)
-        d = per.setdefault(f, {'ok': 0, 'n': 0, 'provers': {}, 'time': 0.0, 'failed': []})
-        d['n'] += 1
-        d['time'] += secs
-        if ok:
-            d['ok'] += 1
-            d['provers'][prover] = d['provers'].get(prover, 0) + 1
+def collect(outdir):
+    """Everything the report says, as data (also read by scripts/evidence.py)."""
+    per = {'64': {}, '32': {}}
+    jobs, job_time = [], {}
+    errors, failed, bad_smoke = [], [], []
+    smoke_n = {'64': 0, '32': 0}
+    unfinished = []
+    for name in JOBS:
+        path = os.path.join(outdir, 'wp-%s.log' % name)
+        if not os.path.exists(path):
+            unfinished.append(name)
+            continue
+        text = open(path, encoding='utf-8', errors='replace').read()
+        fam = '64' if '64' in name else '32'
+        tpath = os.path.join(outdir, 'wp-%s.time' % name)
+        secs = open(tpath).read().strip() if os.path.exists(tpath) else '?'
+        job_time[name] = secs
+        names = functions(text)
+        n_goals = 0
+        if name.startswith('S'):
+            st = SMOKE.findall(text)
+            smoke_n[fam] += len(st)
+            bad_smoke += ['%s: %s (%s)' % (name, n, v) for v, n in st if v != 'Passed']
+            n_goals = len(st)
+            if not st:
+                unfinished.append(name)
         else:
-            d['failed'].append(g)
-    runs = re.findall(r'Proved goals:\s+(\d+) / (\d+)', text)
-    proved = sum(1 for v in goals.values() if v[0])
-    total = len(goals) if len(runs) >= 4 else -1   # all four passes must have finished
-    errors = [l for l in text.splitlines() if 'Why3 Error' in l or '[kernel] User Error' in l]
-    # WP prints "[wp] [Passed] Smoke-test NAME" when the provers could NOT
-    # prove the smoke goal (good); any other verdict means an inconsistent
-    # (vacuous) context or dead code.
-    st = re.findall(r'^\[wp\] \[(\w+)\] Smoke-test (\S+)', text, re.M)
-    smoke_total = len(st) + len(smoke)
-    bad_smoke = sorted(n for v, n in st if v != 'Passed') + sorted(g for g, v in smoke.items() if v[0])
-    bad_smoke += [l for l in text.splitlines() if re.search(r'\[wp\].*(Dead code|dead code|Inconsistent|inconsistent)', l)]
-    out = []
-    out.append('# Proof report (generated by `make proof`; do not edit)\n')
-    out.append('Frama-C/WP, default float model (IEEE binary64, round to nearest), Typed memory model, ')
-    out.append('`-wp-rte` (pass A with `-wp-split`), no cache: every goal below was proved by the provers in this run. '
-               'Smoke tests in their own pass S (`-wp-smoke-tests`, CVC4).\n')
-    out.append('| function | proved / total | provers (goals) | prover time (s) |')
+            if not re.search(r'Proved goals:\s+\d+ / \d+', text):
+                unfinished.append(name)
+            for line in text.splitlines():
+                m = GOAL.match(line)
+                if m and m.group(1) not in ('Failed', 'Unsuccess', 'Timeout', 'Unknown', 'Stepout'):
+                    prover, goal, status, rest = m.groups()
+                    t = TIME.findall(rest)
+                    s = (float(t[-1][0]) / (1000.0 if t[-1][1] == 'ms' else 1.0)) if t else 0.0
+                    ok = status == 'Valid'
+                    f = owner(goal, names)
+                    d = per[fam].setdefault(f, {'ok': 0, 'n': 0, 'provers': {}, 'time': 0.0})
+                    d['n'] += 1
+                    d['time'] += s
+                    n_goals += 1
+                    if ok:
+                        d['ok'] += 1
+                        d['provers'][prover] = d['provers'].get(prover, 0) + 1
+                    else:
+                        failed.append('%s: %s (%s)' % (name, goal, status))
+                    continue
+                m = FAIL.match(line)
+                if m:
+                    f = owner(m.group(2), names)
+                    d = per[fam].setdefault(f, {'ok': 0, 'n': 0, 'provers': {}, 'time': 0.0})
+                    d['n'] += 1
+                    n_goals += 1
+                    failed.append('%s: %s (%s)' % (name, m.group(2), m.group(1)))
+        errors += ['%s: %s' % (name, l.strip()) for l in text.splitlines()
+                   if 'Why3 Error' in l or 'User Error' in l or 'aborted' in l]
+        jobs.append((name, JOBS[name], n_goals, secs))
+    proved = sum(d['ok'] for fam in per.values() for d in fam.values())
+    total = sum(d['n'] for fam in per.values() for d in fam.values())
+    smoke = smoke_n['64'] + smoke_n['32']
+    ok = (proved == total and total > 0 and not failed and not errors and not bad_smoke
+          and not unfinished and smoke_n['64'] > 0 and smoke_n['32'] > 0)
+    return {'per': per, 'jobs': jobs, 'job_time': job_time, 'errors': errors, 'failed': failed,
+            'bad_smoke': bad_smoke, 'smoke_n': smoke_n, 'smoke': smoke, 'unfinished': unfinished,
+            'proved': proved, 'total': total, 'ok': ok}
+
+
+def main():
+    outdir, wall = sys.argv[1], sys.argv[2]
+    data = collect(outdir)
+    per, jobs, errors, failed = data['per'], data['jobs'], data['errors'], data['failed']
+    bad_smoke, smoke_n, unfinished = data['bad_smoke'], data['smoke_n'], data['unfinished']
+    out = ['# Proof report (generated by `make proof`; do not edit)\n',
+           'Frama-C/WP, default float model (IEEE binary64 and binary32, round to nearest), '
+           'Typed memory model, `-wp-rte` (kernels with `-wp-split`), no cache: every goal below '
+           'was proved by the provers in this run. Smoke tests in jobs of their own '
+           '(`-wp-smoke-tests`, CVC4 with a step budget).\n']
+    for fam in ('64', '32'):
+        out.append('## %s\n' % FAMILY[fam])
+        out.append('| function | proved / total | provers (goals) | prover time (s) |')
+        out.append('|---|---|---|---|')
+        fp = ft = 0
+        for f in sorted(per[fam]):
+            d = per[fam][f]
+            pv = ', '.join('%s %d' % (p, c) for p, c in sorted(d['provers'].items()))
+            out.append('| %s | %d / %d | %s | %.1f |' % (f, d['ok'], d['n'], pv, d['time']))
+            fp += d['ok']
+            ft += d['n']
+        out.append('')
+        out.append('%s: %d / %d goals proved; %d smoke tests.\n' % (FAMILY[fam].split(' ')[0], fp, ft, smoke_n[fam]))
+    out.append('## Jobs\n')
+    out.append('| job | what | goals | wall time (s) |')
     out.append('|---|---|---|---|')
-    for f in sorted(per):
-        d = per[f]
-        pv = ', '.join('%s %d' % (p, c) for p, c in sorted(d['provers'].items()))
-        out.append('| %s | %d / %d | %s | %.1f |' % (f, d['ok'], d['n'], pv, d['time']))
+    for name, what, n, secs in jobs:
+        out.append('| %s | %s | %d | %s |' % (name, what, n, secs))
     out.append('')
     out.append('Tools: %s; %s; %s; %s.' % (tool('frama-c -version'), tool('why3 --version'),
                tool('cvc4 --version | head -1'), tool('z3 -version')))
-    out.append('Wall time: %s s for the three proof passes (lemmas, kernels, public functions) and %s s for the smoke tests (%s prover jobs).\n' % (t_main, t_smoke, os.environ.get('CBX_PAR', '2')))
-    failed = [g for d in per.values() for g in d['failed']]
+    out.append('Wall time: %s s in all (%s jobs at a time, %s prover processes each).\n'
+               % (wall, os.environ.get('CBX_JOBS', str(os.cpu_count())), os.environ.get('CBX_WP_PAR', '?')))
+    if unfinished:
+        out.append('Jobs that did not finish: %s\n' % ', '.join(unfinished))
     if failed:
         out.append('Unproved goals:\n')
         out += ['- `%s`' % g for g in sorted(failed)]
         out.append('')
     if errors:
         out.append('Errors:\n')
-        out += ['- `%s`' % e.strip() for e in errors[:20]]
+        out += ['- `%s`' % e for e in errors[:20]]
         out.append('')
-    out.append('Smoke tests (`-wp-smoke-tests`): %d goals, %d proved (a proved smoke goal '
-               'would mean an inconsistent contract or dead code).' % (smoke_total, len(bad_smoke)))
+    ns = smoke_n['64'] + smoke_n['32']
+    out.append('Smoke tests (`-wp-smoke-tests`): %d goals, %d not passed (a proved smoke goal '
+               'would mean an inconsistent contract or dead code).' % (ns, len(bad_smoke)))
     for l in bad_smoke[:20]:
-        out.append('- `%s`' % l.strip())
+        out.append('- `%s`' % l)
     out.append('')
-    ok = proved == total and total > 0 and not failed and not errors and not bad_smoke and smoke_total > 0
-    out.append('Total: %d / %d goals proved.' % (proved, total))
+    ok = data['ok']
+    out.append('Total: %d / %d goals proved.' % (data['proved'], data['total']))
     out.append('RESULT: %s' % ('PROVED' if ok else 'NOT PROVED'))
     print('\n'.join(out))
 

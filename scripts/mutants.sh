@@ -21,6 +21,7 @@
 #   MUT_SPHERE_N  random cases of test_sphere  (default 30000)
 #   MUT_HALF_N    random maps of test_halfspace (default 40)
 #   MUT_TIGHT_N   thousands of cases of test_tight (default 40)
+#   MUT_FLOAT_N   random cases of test_float   (default 50000)
 #   MUT_SEED      seed of the random cases     (default 1)
 #   MUT_TIMEOUT   seconds per test run         (default 30)
 #   MUT_LIST      mutant list                  (default scripts/mutants.txt)
@@ -148,8 +149,8 @@ done
 cp -p "$ROOT/Makefile" "$BASE/Makefile"
 rm -rf "$BASE/build"
 
-TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight"
-BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight"
+TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_float"
+BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_float"
 args_of() {
     case $1 in
     test_badinput) echo "" ;;
@@ -161,6 +162,7 @@ args_of() {
     test_halfspace) echo "$HALF_N $SEED" ;;
     test_batch) echo "50 $SEED" ;;
     test_tight) echo "${MUT_TIGHT_N:-40} $SEED" ;;
+    test_float) echo "${MUT_FLOAT_N:-50000} $SEED" ;;
     esac
 }
 # $NICE, $BINS and the test arguments are meant to be split into words.

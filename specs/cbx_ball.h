@@ -1,6 +1,8 @@
 /*
- * ACSL logic of the sphere and ellipsoid bounds (src/cbx_sphere.c): unit
- * ball, Cauchy-Schwarz chain, domains.
+ * ACSL logic of the sphere and ellipsoid bounds (src/cbx_sphere.c) that
+ * does not depend on the floating-point format: unit ball, Cauchy-Schwarz
+ * chain (over the reals).  The domains and the row rescaling of each format
+ * are in specs/cbx_spec.h.  certbox.h includes this file once.
  *
  * How the proof is split: the code only ever establishes the quantifier-free
  * predicate ball_cover (both ends at least the row norm away from t, in
@@ -74,63 +76,8 @@
     lemma sq_bound_dom: \forall real a0, a1, a2, b0, b1, b2, r;
       sq_le(a0, b0) ==> sq_le(a1, b1) ==> sq_le(a2, b2) ==>
       sq_bound(b0, b1, b2, r) ==> sq_bound(a0, a1, a2, r);
-    // Scaling a row by 2^600 scales its norm by 2^600 (row_radius); a
-    // larger radius still bounds.
-    lemma sq_bound_scale: \forall real b0, b1, b2, r;
-      sq_bound(b0*0x1p600, b1*0x1p600, b2*0x1p600, r) ==> sq_bound(b0, b1, b2, r*0x1p-600);
+    // A larger radius still bounds.
     lemma sq_bound_up: \forall real b0, b1, b2, r, q;
       sq_bound(b0, b1, b2, r) ==> r <= q ==> sq_bound(b0, b1, b2, q);
-*/
-
-/*@ predicate in_dom508(real x, real y) = -0x1p508 <= x*y <= 0x1p508;
-    lemma cls_254: \forall real m, c; cls(m, c, 0x1p254, 0x1p254) ==> in_dom508(m, c);
-
-    predicate aff_nan(cbx_affine *a) =
-         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
-      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
-      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
-
-    predicate sph_dom(real m0, real m1, real m2, real t) =
-      cls(m0, m0, 0x1p509, 0x1p509) && cls(m1, m1, 0x1p509, 0x1p509)
-      && cls(m2, m2, 0x1p509, 0x1p509) && -0x1p1018 <= t <= 0x1p1018;
-
-    predicate sph_axis(cbx_affine *a, cbx_box *o, integer i) =
-      ((\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
-        && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
-         (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
-          && ball_axis(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])))
-      && (!(\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
-        && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
-         whole_axis(o, i));
-
-    predicate ell_dom(real r0, real r1, real r2, real d0, real d1, real d2, real c) =
-      cls(r0, d0, 0x1p254, 0x1p254) && cls(r1, d1, 0x1p254, 0x1p254)
-      && cls(r2, d2, 0x1p254, 0x1p254) && -0x1p1018 <= c <= 0x1p1018;
-*/
-
-/*@ predicate ell_nan(double *center, double *radii, double (*rot)[3]) =
-         \is_NaN(center[0]) || \is_NaN(center[1]) || \is_NaN(center[2])
-      || \is_NaN(radii[0]) || \is_NaN(radii[1]) || \is_NaN(radii[2])
-      || \is_NaN(rot[0][0]) || \is_NaN(rot[0][1]) || \is_NaN(rot[0][2])
-      || \is_NaN(rot[1][0]) || \is_NaN(rot[1][1]) || \is_NaN(rot[1][2])
-      || \is_NaN(rot[2][0]) || \is_NaN(rot[2][1]) || \is_NaN(rot[2][2]);
-
-    predicate ell_row_dom(double *center, double *radii, double (*rot)[3], integer i) =
-      \is_finite(rot[i][0]) && \is_finite(rot[i][1]) && \is_finite(rot[i][2])
-      && \is_finite(radii[0]) && \is_finite(radii[1]) && \is_finite(radii[2])
-      && \is_finite(center[i])
-      && ell_dom(rot[i][0], rot[i][1], rot[i][2], radii[0], radii[1], radii[2], center[i]);
-
-    // Axis i of o bounds center_i + sum_j rot_ij radii_j p_j over the unit ball.
-    predicate ell_axis(double *center, double *radii, double (*rot)[3], cbx_box *o, integer i) =
-      (ell_row_dom(center, radii, rot, i) ==>
-         (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
-          && ball_axis(o->lo[i], o->hi[i], rot[i][0]*radii[0], rot[i][1]*radii[1],
-                       rot[i][2]*radii[2], center[i])))
-      && (!ell_row_dom(center, radii, rot, i) ==> whole_axis(o, i));
-
-    predicate sph_row_dom(cbx_affine *a, integer i) =
-      \is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
-      && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3]);
 */
 #endif /* CBX_BALL_H */

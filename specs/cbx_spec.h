@@ -1,110 +1,61 @@
 /*
- * ACSL logic of certbox: every promise the contracts make is built from the
- * definitions here.  Read by Frama-C only (certbox.h includes this file when
- * __FRAMAC__ is defined); a C compiler never sees it.
+ * ACSL logic of certbox, per floating-point format: every promise the
+ * contracts make is built from the definitions here and from the
+ * format-independent ones of specs/cbx_logic.h and specs/cbx_ball.h.
+ * Read by Frama-C only: certbox.h includes this file once per format
+ * (between cbx_prec_begin.h and cbx_prec_end.h), so that cbx_fp is double
+ * or float and every CBX_ constant is that format's (src/cbx_prec_begin.h;
+ * in binary64: u = 2^-53, eta = 2^-1074, CBX_RT = 2^1018; in binary32:
+ * u = 2^-24, eta = 2^-149, CBX_RT = 2^122).  The binary32 instance's names
+ * end in _f (has_nan_f, ...).  The comments give the binary64 values.
  *
  * Arithmetic in these definitions is exact real arithmetic on the values of
- * the C doubles: `m*l` is the exact product, not the rounded one.
+ * the C variables: `m*l` is the exact product, not the rounded one.
  */
-#ifndef CBX_SPEC_H
-#define CBX_SPEC_H
+
+/* Helpers for the list of magnitude classes (src/cbx_prec_begin.h). */
+#define CBX_CLS_P(tag, bm, bc) cls(m, c, bm, bc)
+#define CBX_CLS_OR(tag, bm, bc) || cls(m, c, bm, bc)
+#define CBX_CLS_LEMMA(tag, bm, bc) \
+  lemma cls_##tag: \forall real m, c; cls(m, c, bm, bc) ==> in_dom(m, c);
 
 /*@ // ---------------------------------------------------------------------
-    // The proven domain of one product m*c: |m*c| <= 2^1018.  A named
+    // The proven domain of one product m*c: |m*c| <= 2^1018 (binary64;
+    // CBX_RT in general: 2^122 in binary32).  A named
     // predicate (not an inline formula) so that the lemmas below have a
     // trigger: the provers instantiate them wherever in_dom(x, y) occurs.
     // ---------------------------------------------------------------------
-    predicate in_dom(real x, real y) = -0x1p1018 <= x*y <= 0x1p1018;
+    predicate in_dom(real x, real y) = -CBX_RT <= x*y <= CBX_RT;
 
-    // One magnitude class: |m| <= 2^k and |c| <= 2^(1018-k).
-    predicate cls(real m, real c, real bm, real bc) =
-      -bm <= m <= bm && -bc <= c <= bc;
 
     // The domain of a product, checked at run time by cbx_dom_pair():
-    // one of 18 magnitude classes (k = 509, 0, 64, ..., 960, 1018).
+    // one of 18 magnitude classes (binary64: |m| <= 2^k, |c| <= 2^(1018-k)
+    // for k = 509, 0, 64, ..., 960, 1018; binary32: 2^k, 2^(122-k) for
+    // k = 61, 0, 8, ..., 120, 122).
     predicate dom_pair(real m, real c) =
-         cls(m, c, 0x1p509,  0x1p509)
-      || cls(m, c, 0x1p0,    0x1p1018) || cls(m, c, 0x1p64,   0x1p954)
-      || cls(m, c, 0x1p128,  0x1p890)  || cls(m, c, 0x1p192,  0x1p826)
-      || cls(m, c, 0x1p256,  0x1p762)  || cls(m, c, 0x1p320,  0x1p698)
-      || cls(m, c, 0x1p384,  0x1p634)  || cls(m, c, 0x1p448,  0x1p570)
-      || cls(m, c, 0x1p512,  0x1p506)  || cls(m, c, 0x1p576,  0x1p442)
-      || cls(m, c, 0x1p640,  0x1p378)  || cls(m, c, 0x1p704,  0x1p314)
-      || cls(m, c, 0x1p768,  0x1p250)  || cls(m, c, 0x1p832,  0x1p186)
-      || cls(m, c, 0x1p896,  0x1p122)  || cls(m, c, 0x1p960,  0x1p58)
-      || cls(m, c, 0x1p1018, 0x1p0);
+      CBX_CLASS_HEAD(CBX_CLS_P) CBX_CLASS_TAIL(CBX_CLS_OR);
 
-    // Nonlinear facts, proven once over the reals (no floats in context).
-    lemma cls_509:  \forall real m, c; cls(m, c, 0x1p509, 0x1p509) ==> in_dom(m, c);
-    lemma cls_0:    \forall real m, c; cls(m, c, 0x1p0, 0x1p1018) ==> in_dom(m, c);
-    lemma cls_64:   \forall real m, c; cls(m, c, 0x1p64, 0x1p954) ==> in_dom(m, c);
-    lemma cls_128:  \forall real m, c; cls(m, c, 0x1p128, 0x1p890) ==> in_dom(m, c);
-    lemma cls_192:  \forall real m, c; cls(m, c, 0x1p192, 0x1p826) ==> in_dom(m, c);
-    lemma cls_256:  \forall real m, c; cls(m, c, 0x1p256, 0x1p762) ==> in_dom(m, c);
-    lemma cls_320:  \forall real m, c; cls(m, c, 0x1p320, 0x1p698) ==> in_dom(m, c);
-    lemma cls_384:  \forall real m, c; cls(m, c, 0x1p384, 0x1p634) ==> in_dom(m, c);
-    lemma cls_448:  \forall real m, c; cls(m, c, 0x1p448, 0x1p570) ==> in_dom(m, c);
-    lemma cls_512:  \forall real m, c; cls(m, c, 0x1p512, 0x1p506) ==> in_dom(m, c);
-    lemma cls_576:  \forall real m, c; cls(m, c, 0x1p576, 0x1p442) ==> in_dom(m, c);
-    lemma cls_640:  \forall real m, c; cls(m, c, 0x1p640, 0x1p378) ==> in_dom(m, c);
-    lemma cls_704:  \forall real m, c; cls(m, c, 0x1p704, 0x1p314) ==> in_dom(m, c);
-    lemma cls_768:  \forall real m, c; cls(m, c, 0x1p768, 0x1p250) ==> in_dom(m, c);
-    lemma cls_832:  \forall real m, c; cls(m, c, 0x1p832, 0x1p186) ==> in_dom(m, c);
-    lemma cls_896:  \forall real m, c; cls(m, c, 0x1p896, 0x1p122) ==> in_dom(m, c);
-    lemma cls_960:  \forall real m, c; cls(m, c, 0x1p960, 0x1p58) ==> in_dom(m, c);
-    lemma cls_1018: \forall real m, c; cls(m, c, 0x1p1018, 0x1p0) ==> in_dom(m, c);
+    // Nonlinear facts, proven once over the reals (no floats in context):
+    // cls_<tag>: cls(m, c, bm, bc) ==> in_dom(m, c), one per class.
+    CBX_CLASS_HEAD(CBX_CLS_LEMMA) CBX_CLASS_TAIL(CBX_CLS_LEMMA)
 
     lemma dom_pair_in_dom: \forall real m, c; dom_pair(m, c) ==> in_dom(m, c);
-
-    // ---------------------------------------------------------------------
-    // One term of Arvo's sum: m*c for c in {l, h}.
-    // ---------------------------------------------------------------------
-    logic real tmin(real m, real l, real h) = \min(m*l, m*h);
-    logic real tmax(real m, real l, real h) = \max(m*l, m*h);
-    logic real tmag(real m, real l, real h) = \max(\abs(m*l), \abs(m*h));
-
-    // Exact bounds of one output coordinate over the box, and its scale
-    // S = |t| + sum_j |m_j| max(|l_j|, |h_j|) used by the tightness bound.
-    logic real row_lo(real m0, real m1, real m2, real t,
-                      real l0, real h0, real l1, real h1, real l2, real h2) =
-      t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2);
-    logic real row_hi(real m0, real m1, real m2, real t,
-                      real l0, real h0, real l1, real h1, real l2, real h2) =
-      t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2);
-    logic real row_mag(real m0, real m1, real m2, real t,
-                       real l0, real h0, real l1, real h1, real l2, real h2) =
-      \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + tmag(m2, l2, h2);
-
-    // r is below the image of all 8 corners (c_j in {l_j, h_j}).
-    predicate below8(real r, real m0, real m1, real m2, real t,
-                     real l0, real h0, real l1, real h1, real l2, real h2) =
-         r <= m0*l0 + m1*l1 + m2*l2 + t && r <= m0*l0 + m1*l1 + m2*h2 + t
-      && r <= m0*l0 + m1*h1 + m2*l2 + t && r <= m0*l0 + m1*h1 + m2*h2 + t
-      && r <= m0*h0 + m1*l1 + m2*l2 + t && r <= m0*h0 + m1*l1 + m2*h2 + t
-      && r <= m0*h0 + m1*h1 + m2*l2 + t && r <= m0*h0 + m1*h1 + m2*h2 + t;
-    // r is above the image of all 8 corners.
-    predicate above8(real r, real m0, real m1, real m2, real t,
-                     real l0, real h0, real l1, real h1, real l2, real h2) =
-         r >= m0*l0 + m1*l1 + m2*l2 + t && r >= m0*l0 + m1*l1 + m2*h2 + t
-      && r >= m0*l0 + m1*h1 + m2*l2 + t && r >= m0*l0 + m1*h1 + m2*h2 + t
-      && r >= m0*h0 + m1*l1 + m2*l2 + t && r >= m0*h0 + m1*l1 + m2*h2 + t
-      && r >= m0*h0 + m1*h1 + m2*l2 + t && r >= m0*h0 + m1*h1 + m2*h2 + t;
 
     // Tightness: at most 12 u S + 2^-1065 below (above) the exact bound.
     predicate lo_tight(real r, real m0, real m1, real m2, real t,
                        real l0, real h0, real l1, real h1, real l2, real h2) =
       r >= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-           - (0x1.8p-50 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 0x1p-1065);
+           - (CBX_U12 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + CBX_ETA512);
     predicate hi_tight(real r, real m0, real m1, real m2, real t,
                        real l0, real h0, real l1, real h1, real l2, real h2) =
       r <= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-           + (0x1.8p-50 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 0x1p-1065);
+           + (CBX_U12 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + CBX_ETA512);
 
     // The inputs of one output row are in the proven domain.
     predicate row_in_dom(real m0, real m1, real m2, real t,
                          real l0, real h0, real l1, real h1, real l2, real h2) =
       dom_pair(m0, l0) && dom_pair(m0, h0) && dom_pair(m1, l1) && dom_pair(m1, h1)
-      && dom_pair(m2, l2) && dom_pair(m2, h2) && -0x1p1018 <= t <= 0x1p1018;
+      && dom_pair(m2, l2) && dom_pair(m2, h2) && -CBX_RT <= t <= CBX_RT;
 */
 
 /*@ // ---------------------------------------------------------------------
@@ -113,63 +64,58 @@
     //   { p : lo_j <= p_j <= hi_j where that end is finite };
     // (lo = +inf or hi = -inf is an empty box, caught before: no_point).
     // ---------------------------------------------------------------------
-    predicate map_fin(double m0, double m1, double m2, double t) =
+    predicate map_fin(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t) =
       \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
-    predicate row_full(double m0, double m1, double m2, double t,
-                       double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate row_full(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                       cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       map_fin(m0, m1, m2, t)
       && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
       && \is_finite(l2) && \is_finite(h2)
       && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 
     // p is in [l, h]; an infinite end is no constraint.
-    predicate ext_in(real p, double l, double h) =
+    predicate ext_in(real p, cbx_fp l, cbx_fp h) =
       (\is_finite(l) ==> l <= p) && (\is_finite(h) ==> p <= h);
 
     // r is below (above) t + m.p for every real point p of the box.
     predicate ext_below(real r, real m0, real m1, real m2, real t,
-                        double l0, double h0, double l1, double h1, double l2, double h2) =
+                        cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       \forall real p0, p1, p2;
         ext_in(p0, l0, h0) && ext_in(p1, l1, h1) && ext_in(p2, l2, h2) ==>
         r <= m0*p0 + m1*p1 + m2*p2 + t;
     predicate ext_above(real r, real m0, real m1, real m2, real t,
-                        double l0, double h0, double l1, double h1, double l2, double h2) =
+                        cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       \forall real p0, p1, p2;
         ext_in(p0, l0, h0) && ext_in(p1, l1, h1) && ext_in(p2, l2, h2) ==>
         r >= m0*p0 + m1*p1 + m2*p2 + t;
 
-    // The vertex of [l, h] where m*x is least (vlo) or greatest (vhi):
-    // an end chosen by the sign of m; 0 when m == 0 (0 * inf = 0).
-    logic real vlo(real m, real l, real h) = m > 0 ? l : (m < 0 ? h : 0);
-    logic real vhi(real m, real l, real h) = m > 0 ? h : (m < 0 ? l : 0);
-
     // m*x is unbounded below (above) on [l, h]: the end it needs is infinite.
-    predicate unb_lo(real m, double l, double h) =
+    predicate unb_lo(real m, cbx_fp l, cbx_fp h) =
       (m > 0 && !\is_finite(l)) || (m < 0 && !\is_finite(h));
-    predicate unb_hi(real m, double l, double h) =
+    predicate unb_hi(real m, cbx_fp l, cbx_fp h) =
       (m > 0 && !\is_finite(h)) || (m < 0 && !\is_finite(l));
     predicate row_unb_lo(real m0, real m1, real m2,
-                         double l0, double h0, double l1, double h1, double l2, double h2) =
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       unb_lo(m0, l0, h0) || unb_lo(m1, l1, h1) || unb_lo(m2, l2, h2);
     predicate row_unb_hi(real m0, real m1, real m2,
-                         double l0, double h0, double l1, double h1, double l2, double h2) =
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       unb_hi(m0, l0, h0) || unb_hi(m1, l1, h1) || unb_hi(m2, l2, h2);
 
     // The point box at the lower (upper) vertex is in the proven domain.
     predicate vdom_lo(real m0, real m1, real m2, real t,
-                      double l0, double h0, double l1, double h1, double l2, double h2) =
+                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       row_in_dom(m0, m1, m2, t, vlo(m0, l0, h0), vlo(m0, l0, h0), vlo(m1, l1, h1),
                  vlo(m1, l1, h1), vlo(m2, l2, h2), vlo(m2, l2, h2));
     predicate vdom_hi(real m0, real m1, real m2, real t,
-                      double l0, double h0, double l1, double h1, double l2, double h2) =
+                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       row_in_dom(m0, m1, m2, t, vhi(m0, l0, h0), vhi(m0, l0, h0), vhi(m1, l1, h1),
                  vhi(m1, l1, h1), vhi(m2, l2, h2), vhi(m2, l2, h2));
 
     // One end, computed from its vertex: -inf where the image is unbounded
     // below; else, in the domain, finite, below every point's image and
     // tight (12 u S + 2^-1065, S = |t| + sum_j |m_j v_j|); else -inf.
-    predicate ext_lo_end(double r, double m0, double m1, double m2, double t,
-                         double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate ext_lo_end(cbx_fp r, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       (row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2) ==> \is_minus_infinity(r))
       && ((!row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
            && vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
@@ -178,8 +124,8 @@
                        vlo(m1, l1, h1), vlo(m2, l2, h2), vlo(m2, l2, h2))))
       && ((!row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
            && !vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==> \is_minus_infinity(r));
-    predicate ext_hi_end(double r, double m0, double m1, double m2, double t,
-                         double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate ext_hi_end(cbx_fp r, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       (row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2) ==> \is_plus_infinity(r))
       && ((!row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
            && vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==>
@@ -189,27 +135,12 @@
       && ((!row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
            && !vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) ==> \is_plus_infinity(r));
 
-    // Sums of per-column facts, over the reals (products are atoms).
-    lemma ext_sum_lo: \forall real r, m0, m1, m2, t, v0, v1, v2, p0, p1, p2;
-      r <= m0*v0 + m1*v1 + m2*v2 + t ==>
-      m0*v0 <= m0*p0 ==> m1*v1 <= m1*p1 ==> m2*v2 <= m2*p2 ==>
-      r <= m0*p0 + m1*p1 + m2*p2 + t;
-    lemma ext_sum_hi: \forall real r, m0, m1, m2, t, v0, v1, v2, p0, p1, p2;
-      r >= m0*v0 + m1*v1 + m2*v2 + t ==>
-      m0*v0 >= m0*p0 ==> m1*v1 >= m1*p1 ==> m2*v2 >= m2*p2 ==>
-      r >= m0*p0 + m1*p1 + m2*p2 + t;
-    // The one nonlinear fact of the half-space proof, with a product as
-    // its trigger (the lemma functions of src/cbx_interval.c use it).
-    // (a named predicate, so that WP's simplifier leaves the product as it is
-    // and the lemma has a trigger).
-    predicate nn_prod(real a, real b) = 0 <= a*b;
-    lemma mul_nonneg: \forall real a, b; 0 <= a ==> 0 <= b ==> nn_prod(a, b);
     // One column: how the code picks the vertex v where m*x is least
     // (greatest) on [l, h]: an end by the sign of m, 0 for m == 0.
-    predicate sel_lo(real m, real v, double l, double h) =
+    predicate sel_lo(real m, real v, cbx_fp l, cbx_fp h) =
       (m > 0 ==> v == l && \is_finite(l)) && (m < 0 ==> v == h && \is_finite(h))
       && (m == 0 ==> v == 0);
-    predicate sel_hi(real m, real v, double l, double h) =
+    predicate sel_hi(real m, real v, cbx_fp l, cbx_fp h) =
       (m > 0 ==> v == h && \is_finite(h)) && (m < 0 ==> v == l && \is_finite(l))
       && (m == 0 ==> v == 0);
 */
@@ -226,8 +157,8 @@
 
     // No real point on axis j: hi < lo (IEEE comparison), or lo = +inf,
     // or hi = -inf (the set { x real : +inf <= x } is empty).
-    predicate no_point(double l, double h) =
-      \lt_double(h, l) || \is_plus_infinity(l) || \is_minus_infinity(h);
+    predicate no_point(cbx_fp l, cbx_fp h) =
+      CBX_LT(h, l) || \is_plus_infinity(l) || \is_minus_infinity(h);
     predicate is_empty(cbx_box *b) =
       no_point(b->lo[0], b->hi[0]) || no_point(b->lo[1], b->hi[1])
       || no_point(b->lo[2], b->hi[2]);
@@ -269,8 +200,8 @@
     //    ext_hi_end): infinite box ends are half-spaces, a zero
     //    coefficient contributes nothing (0 * inf = 0);
     //  an infinite map entry: the whole line [-inf, +inf].
-    predicate axis_sound_s(double lo, double hi, double m0, double m1, double m2, double t,
-                           double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate axis_sound_s(cbx_fp lo, cbx_fp hi, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                           cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       (row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) ==>
          (\is_finite(lo) && \is_finite(hi)
           && below8(lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
@@ -285,8 +216,8 @@
 
     // The axis is computed without loss: every finite end is proven and
     // every infinite end is one where the exact image is unbounded.
-    predicate axis_ok_s(double m0, double m1, double m2, double t,
-                        double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate axis_ok_s(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                        cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
       || (map_fin(m0, m1, m2, t)
           && (row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
@@ -302,22 +233,22 @@
     // ---- one box's whole promise on values, for the batch form -------
     // Inputs: the 12 map entries a_ij, the box l_j, h_j; output: o_i, p_i
     // (lo, hi of axis i).  The same cases as cbx_transform_box's behaviors.
-    predicate nan_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                    double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate nan_v(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
+                    cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
          \is_NaN(a00) || \is_NaN(a01) || \is_NaN(a02) || \is_NaN(a03)
       || \is_NaN(a10) || \is_NaN(a11) || \is_NaN(a12) || \is_NaN(a13)
       || \is_NaN(a20) || \is_NaN(a21) || \is_NaN(a22) || \is_NaN(a23)
       || \is_NaN(l0) || \is_NaN(l1) || \is_NaN(l2) || \is_NaN(h0) || \is_NaN(h1) || \is_NaN(h2);
-    predicate empty_v(double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate empty_v(cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       no_point(l0, h0) || no_point(l1, h1) || no_point(l2, h2);
-    predicate ok_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                   double l0, double h0, double l1, double h1, double l2, double h2) =
+    predicate ok_v(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
+                   cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2) =
       axis_ok_s(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
       && axis_ok_s(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
       && axis_ok_s(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
-    predicate box_done_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                         double l0, double h0, double l1, double h1, double l2, double h2,
-                         double o0, double p0, double o1, double p1, double o2, double p2) =
+    predicate box_done_v(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2,
+                         cbx_fp o0, cbx_fp p0, cbx_fp o1, cbx_fp p1, cbx_fp o2, cbx_fp p2) =
       (nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) ==>
          (\is_minus_infinity(o0) && \is_plus_infinity(p0) && \is_minus_infinity(o1)
           && \is_plus_infinity(p1) && \is_minus_infinity(o2) && \is_plus_infinity(p2)))
@@ -329,14 +260,9 @@
           && axis_sound_s(o1, p1, a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
           && axis_sound_s(o2, p2, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)));
 
-    // Severity of a status, for "the most severe status met":
-    // CBX_OK 0 < CBX_EMPTY 1 < CBX_ERANGE 2 < CBX_EINVAL 3.
-    logic integer sev(integer s) =
-      s == CBX_EINVAL ? 3 : (s == CBX_ERANGE ? 2 : (s == CBX_EMPTY ? 1 : 0));
-
     // k is the severity of the status cbx_transform_box returns.
-    predicate box_sev_v(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                        double l0, double h0, double l1, double h1, double l2, double h2, integer k) =
+    predicate box_sev_v(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
+                        cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2, integer k) =
       (nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 3)
       || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && empty_v(l0, h0, l1, h1, l2, h2) && k == 1)
       || (!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && !empty_v(l0, h0, l1, h1, l2, h2) && ok_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && k == 0)
@@ -345,8 +271,8 @@
     // The severity of the status for this box is at most w.  (Stated without
     // a quantifier over severities: a global lemma "box_sev_v is a
     // function" made the provers time out on unrelated lemmas.)
-    predicate box_sev_le(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                         double l0, double h0, double l1, double h1, double l2, double h2, integer w) =
+    predicate box_sev_le(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2, integer w) =
       0 <= w
       && (nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) ==> 3 <= w)
       && ((!nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2) && empty_v(l0, h0, l1, h1, l2, h2)) ==> 1 <= w)
@@ -355,52 +281,27 @@
     // The same with the output box as one struct value: the batch loop's
     // invariant then frames (a write of out[k] leaves the value out[j]
     // unchanged) where six separate fields did not.
-    predicate box_done_m(double a00, double a01, double a02, double a03, double a10, double a11, double a12, double a13, double a20, double a21, double a22, double a23,
-                         double l0, double h0, double l1, double h1, double l2, double h2, cbx_box O) =
+    predicate box_done_m(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2, cbx_box O) =
       box_done_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2,
                  O.lo[0], O.hi[0], O.lo[1], O.hi[1], O.lo[2], O.hi[2]);
 */
 
 /*@ // ---------------------------------------------------------------------
-    // Center/half-diagonal form: the real box [oc - oh, oc + oh] of one
-    // output axis and the input box [c_j - h_j, c_j + h_j].
-    // ---------------------------------------------------------------------
-    logic real crow_c(real m0, real m1, real m2, real t, real c0, real c1, real c2) =
-      m0*c0 + m1*c1 + m2*c2 + t;
-    logic real crow_h(real m0, real m1, real m2, real h0, real h1, real h2) =
-      \abs(m0*h0) + \abs(m1*h1) + \abs(m2*h2);
-    logic real crow_mag(real m0, real m1, real m2, real t, real c0, real c1, real c2,
-                        real h0, real h1, real h2) =
-      \abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2) + crow_h(m0, m1, m2, h0, h1, h2);
-
-    // |exact center - oc| + exact half <= oh: [oc-oh, oc+oh] holds the image.
-    predicate cbox_core(real oc, real oh, real m0, real m1, real m2, real t,
-                        real c0, real c1, real c2, real h0, real h1, real h2) =
-      \abs(crow_c(m0, m1, m2, t, c0, c1, c2) - oc) + crow_h(m0, m1, m2, h0, h1, h2) <= oh;
-
-    // The same, stated on the 8 corners c_j -+ h_j.
-    predicate cbox_corners(real oc, real oh, real m0, real m1, real m2, real t,
-                           real c0, real c1, real c2, real h0, real h1, real h2) =
-      below8(oc - oh, m0, m1, m2, t, c0 - h0, c0 + h0, c1 - h1, c1 + h1, c2 - h2, c2 + h2)
-      && above8(oc + oh, m0, m1, m2, t, c0 - h0, c0 + h0, c1 - h1, c1 + h1, c2 - h2, c2 + h2);
-
-    lemma cbox_core_corners:
-      \forall real oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2;
-        cbox_core(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2) ==>
-        cbox_corners(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
-
+    // Center/half-diagonal form (the real definitions: specs/cbx_logic.h).
     // Tightness: each end within 12 u S + 2^-1065 of the exact end.
+    // ---------------------------------------------------------------------
     predicate cbox_tight(real oc, real oh, real m0, real m1, real m2, real t,
                          real c0, real c1, real c2, real h0, real h1, real h2) =
       oc - oh >= crow_c(m0, m1, m2, t, c0, c1, c2) - crow_h(m0, m1, m2, h0, h1, h2)
-                 - (0x1.8p-50 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) + 0x1p-1065)
+                 - (CBX_U12 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) + CBX_ETA512)
       && oc + oh <= crow_c(m0, m1, m2, t, c0, c1, c2) + crow_h(m0, m1, m2, h0, h1, h2)
-                 + (0x1.8p-50 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) + 0x1p-1065);
+                 + (CBX_U12 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) + CBX_ETA512);
 
     predicate crow_in_dom(real m0, real m1, real m2, real t,
                           real c0, real c1, real c2, real h0, real h1, real h2) =
       dom_pair(m0, c0) && dom_pair(m0, h0) && dom_pair(m1, c1) && dom_pair(m1, h1)
-      && dom_pair(m2, c2) && dom_pair(m2, h2) && -0x1p1018 <= t <= 0x1p1018;
+      && dom_pair(m2, c2) && dom_pair(m2, h2) && -CBX_RT <= t <= CBX_RT;
 */
 
 /*@ predicate cbox_has_nan(cbx_affine *a, cbx_cbox *b) =
@@ -417,8 +318,8 @@
       || \is_NaN(b->hi[0]) || \is_NaN(b->hi[1]) || \is_NaN(b->hi[2]);
     // h < 0 on some axis (IEEE comparison; -0 is not negative)
     predicate cbox_empty(cbx_cbox *b) =
-      \lt_double(b->h[0], (double)0.0) || \lt_double(b->h[1], (double)0.0)
-      || \lt_double(b->h[2], (double)0.0);
+      CBX_LT(b->h[0], (cbx_fp)0.0) || CBX_LT(b->h[1], (cbx_fp)0.0)
+      || CBX_LT(b->h[2], (cbx_fp)0.0);
     predicate cwhole_axis(cbx_cbox *o, integer i) =
       o->c[i] == 0 && \is_plus_infinity(o->h[i]);
     predicate cwhole(cbx_cbox *o) = cwhole_axis(o, 0) && cwhole_axis(o, 1) && cwhole_axis(o, 2);
@@ -441,20 +342,16 @@
       && cbox_tight(o->c[i], o->h[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],
                     b->c[0], b->c[1], b->c[2], b->h[0], b->h[1], b->h[2]);
 
-    // A column whose coefficient is 0 is dropped from a row (0 * inf = 0):
-    // its center and half-width count as 0, whatever they are.
-    logic real dz(real m, real x) = m == 0 ? 0 : x;
-
-    predicate crow_full(double m0, double m1, double m2, double t,
-                        double c0, double c1, double c2, double h0, double h1, double h2) =
+    predicate crow_full(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                        cbx_fp c0, cbx_fp c1, cbx_fp c2, cbx_fp h0, cbx_fp h1, cbx_fp h2) =
       \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
       && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
       && \is_finite(h0) && \is_finite(h1) && \is_finite(h2)
       && crow_in_dom(m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
     // The row with its zero-coefficient columns dropped is finite and in
     // the domain.
-    predicate crow_dfull(double m0, double m1, double m2, double t,
-                         double c0, double c1, double c2, double h0, double h1, double h2) =
+    predicate crow_dfull(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                         cbx_fp c0, cbx_fp c1, cbx_fp c2, cbx_fp h0, cbx_fp h1, cbx_fp h2) =
       map_fin(m0, m1, m2, t)
       && (m0 != 0 ==> \is_finite(c0) && \is_finite(h0))
       && (m1 != 0 ==> \is_finite(c1) && \is_finite(h1))
@@ -465,8 +362,8 @@
     // One axis on the values: the kernel's statement on a full row; on a
     // row that is full once its zero-coefficient columns are dropped, the
     // same statement on the dropped row; (0, +inf) otherwise.
-    predicate caxis_sound_s(double oc, double oh, double m0, double m1, double m2, double t,
-                            double c0, double c1, double c2, double h0, double h1, double h2) =
+    predicate caxis_sound_s(cbx_fp oc, cbx_fp oh, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                            cbx_fp c0, cbx_fp c1, cbx_fp c2, cbx_fp h0, cbx_fp h1, cbx_fp h2) =
       (crow_full(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) ==>
          (\is_finite(oc) && \is_finite(oh)
           && cbox_corners(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2)
@@ -491,7 +388,7 @@
 
 
     // Conversions: one axis in their domain (finite, magnitude <= 2^1019).
-    predicate conv_dom(real x, real y) = -0x1p1019 <= x <= 0x1p1019 && -0x1p1019 <= y <= 0x1p1019;
+    predicate conv_dom(real x, real y) = -CBX_R19 <= x <= CBX_R19 && -CBX_R19 <= y <= CBX_R19;
 
     predicate b2c_axis(cbx_box *in, cbx_cbox *out, integer i) =
       ((\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
@@ -507,13 +404,64 @@
           whole_axis(out, i));
 */
 
-/* Argument lists of the value predicates above, read at label L. */
-#define CBX_AV(a, L) \
-  \at((a)->m[0][0], L), \at((a)->m[0][1], L), \at((a)->m[0][2], L), \at((a)->m[0][3], L), \
-  \at((a)->m[1][0], L), \at((a)->m[1][1], L), \at((a)->m[1][2], L), \at((a)->m[1][3], L), \
-  \at((a)->m[2][0], L), \at((a)->m[2][1], L), \at((a)->m[2][2], L), \at((a)->m[2][3], L)
-#define CBX_BV(b, L) \
-  \at((b)->lo[0], L), \at((b)->hi[0], L), \at((b)->lo[1], L), \at((b)->hi[1], L), \
-  \at((b)->lo[2], L), \at((b)->hi[2], L)
+/*@ // ---------------------------------------------------------------------
+    // Spheres and ellipsoids (src/cbx_sphere.c); the format-independent
+    // Cauchy-Schwarz chain is specs/cbx_ball.h.
+    // Scaling a row by 2^600 scales its norm by 2^600 (row_radius; CBX_SUP,
+    // 2^90 in binary32).
+    // ---------------------------------------------------------------------
+    lemma sq_bound_scale: \forall real b0, b1, b2, r;
+      sq_bound(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP, r) ==> sq_bound(b0, b1, b2, r*CBX_SDN);
 
-#endif /* CBX_SPEC_H */
+    // |x y| <= 2^508 (CBX_EP): the products of an ellipsoid's rows.
+    predicate in_dom508(real x, real y) = -CBX_EP <= x*y <= CBX_EP;
+    lemma cls_254: \forall real m, c; cls(m, c, CBX_EB, CBX_EB) ==> in_dom508(m, c);
+
+    predicate aff_nan(cbx_affine *a) =
+         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
+      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
+      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
+
+    predicate sph_dom(real m0, real m1, real m2, real t) =
+      cls(m0, m0, CBX_SB, CBX_SB) && cls(m1, m1, CBX_SB, CBX_SB)
+      && cls(m2, m2, CBX_SB, CBX_SB) && -CBX_RT <= t <= CBX_RT;
+
+    predicate sph_axis(cbx_affine *a, cbx_box *o, integer i) =
+      ((\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+        && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
+         (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
+          && ball_axis(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])))
+      && (!(\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+        && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
+         whole_axis(o, i));
+
+    predicate ell_dom(real r0, real r1, real r2, real d0, real d1, real d2, real c) =
+      cls(r0, d0, CBX_EB, CBX_EB) && cls(r1, d1, CBX_EB, CBX_EB)
+      && cls(r2, d2, CBX_EB, CBX_EB) && -CBX_RT <= c <= CBX_RT;
+*/
+
+/*@ predicate ell_nan(cbx_fp *center, cbx_fp *radii, cbx_fp (*rot)[3]) =
+         \is_NaN(center[0]) || \is_NaN(center[1]) || \is_NaN(center[2])
+      || \is_NaN(radii[0]) || \is_NaN(radii[1]) || \is_NaN(radii[2])
+      || \is_NaN(rot[0][0]) || \is_NaN(rot[0][1]) || \is_NaN(rot[0][2])
+      || \is_NaN(rot[1][0]) || \is_NaN(rot[1][1]) || \is_NaN(rot[1][2])
+      || \is_NaN(rot[2][0]) || \is_NaN(rot[2][1]) || \is_NaN(rot[2][2]);
+
+    predicate ell_row_dom(cbx_fp *center, cbx_fp *radii, cbx_fp (*rot)[3], integer i) =
+      \is_finite(rot[i][0]) && \is_finite(rot[i][1]) && \is_finite(rot[i][2])
+      && \is_finite(radii[0]) && \is_finite(radii[1]) && \is_finite(radii[2])
+      && \is_finite(center[i])
+      && ell_dom(rot[i][0], rot[i][1], rot[i][2], radii[0], radii[1], radii[2], center[i]);
+
+    // Axis i of o bounds center_i + sum_j rot_ij radii_j p_j over the unit ball.
+    predicate ell_axis(cbx_fp *center, cbx_fp *radii, cbx_fp (*rot)[3], cbx_box *o, integer i) =
+      (ell_row_dom(center, radii, rot, i) ==>
+         (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
+          && ball_axis(o->lo[i], o->hi[i], rot[i][0]*radii[0], rot[i][1]*radii[1],
+                       rot[i][2]*radii[2], center[i])))
+      && (!ell_row_dom(center, radii, rot, i) ==> whole_axis(o, i));
+
+    predicate sph_row_dom(cbx_affine *a, integer i) =
+      \is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
+      && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3]);
+*/

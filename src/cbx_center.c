@@ -12,7 +12,7 @@
 #include "cbx_round.h"
 #include "cbx_domain.h"
 
-typedef struct cbox_res { double c, h; } cbox_res;
+typedef struct cbox_res { cbx_fp c, h; } cbox_res;
 
 /* One output axis of the center/half transform. */
 /*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
@@ -20,61 +20,61 @@ typedef struct cbox_res { double c, h; } cbox_res;
                    && \is_finite(h0) && \is_finite(h1) && \is_finite(h2);
     requires dom: in_dom(m0, c0) && in_dom(m0, h0) && in_dom(m1, c1) && in_dom(m1, h1)
                   && in_dom(m2, c2) && in_dom(m2, h2);
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \nothing;
     ensures fin: \is_finite(\result.c) && \is_finite(\result.h);
     ensures core: cbox_core(\result.c, \result.h, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
     ensures tight: cbox_tight(\result.c, \result.h, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
 */
-static cbox_res cbox_axis(double m0, double m1, double m2, double t,
-                          double c0, double c1, double c2, double h0, double h1, double h2)
+static cbox_res cbox_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                          cbx_fp c0, cbx_fp c1, cbx_fp c2, cbx_fp h0, cbx_fp h1, cbx_fp h2)
 {
-    double p0 = cbx_mul_rn(m0, c0);
-    double p1 = cbx_mul_rn(m1, c1);
-    double p2 = cbx_mul_rn(m2, c2);
-    double q0 = cbx_abs(cbx_mul_rn(m0, h0));
-    double q1 = cbx_abs(cbx_mul_rn(m1, h1));
-    double q2 = cbx_abs(cbx_mul_rn(m2, h2));
-    /*@ assert M: \abs(m0*c0) <= 0x1p1018 && \abs(m1*c1) <= 0x1p1018 && \abs(m2*c2) <= 0x1p1018
-                  && \abs(m0*h0) <= 0x1p1018 && \abs(m1*h1) <= 0x1p1018 && \abs(m2*h2) <= 0x1p1018; */
-    /*@ assert p0e: -(0x1p-53*\abs(m0*c0) + 0x1p-1074) <= p0 - m0*c0 <= 0x1p-53*\abs(m0*c0) + 0x1p-1074; */
-    /*@ assert q0e: -(0x1p-53*\abs(m0*h0) + 0x1p-1074) <= q0 - \abs(m0*h0) <= 0x1p-53*\abs(m0*h0) + 0x1p-1074; */
-    /*@ assert p1e: -(0x1p-53*\abs(m1*c1) + 0x1p-1074) <= p1 - m1*c1 <= 0x1p-53*\abs(m1*c1) + 0x1p-1074; */
-    /*@ assert q1e: -(0x1p-53*\abs(m1*h1) + 0x1p-1074) <= q1 - \abs(m1*h1) <= 0x1p-53*\abs(m1*h1) + 0x1p-1074; */
-    /*@ assert p2e: -(0x1p-53*\abs(m2*c2) + 0x1p-1074) <= p2 - m2*c2 <= 0x1p-53*\abs(m2*c2) + 0x1p-1074; */
-    /*@ assert q2e: -(0x1p-53*\abs(m2*h2) + 0x1p-1074) <= q2 - \abs(m2*h2) <= 0x1p-53*\abs(m2*h2) + 0x1p-1074; */
-    double s1 = cbx_add_rn(t, p0);
-    /*@ assert a1: -(\abs(t) + \abs(m0*c0) + 0x1p-53*\abs(m0*c0) + 0x1p-1074) <= t + p0 <= \abs(t) + \abs(m0*c0) + 0x1p-53*\abs(m0*c0) + 0x1p-1074; */
-    /*@ assert r1: -(0x1p-53*(\abs(t) + \abs(m0*c0) + 0x1p-53*\abs(m0*c0) + 0x1p-1074) + 0x1p-1074) <= s1 - (t + p0) <= 0x1p-53*(\abs(t) + \abs(m0*c0) + 0x1p-53*\abs(m0*c0) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e1: -(0x1.00001p-53*(1*\abs(t) + 2*\abs(m0*c0)) + 3*0x1p-1074) <= s1 - (t + m0*c0) <= 0x1.00001p-53*(1*\abs(t) + 2*\abs(m0*c0)) + 3*0x1p-1074; */
-    double s2 = cbx_add_rn(s1, p1);
-    /*@ assert a2: -(\abs(t) + \abs(m0*c0) + 0x1.00001p-53*(1*\abs(t) + 2*\abs(m0*c0)) + 3*0x1p-1074 + \abs(m1*c1) + 0x1p-53*\abs(m1*c1) + 0x1p-1074) <= s1 + p1 <= \abs(t) + \abs(m0*c0) + 0x1.00001p-53*(1*\abs(t) + 2*\abs(m0*c0)) + 3*0x1p-1074 + \abs(m1*c1) + 0x1p-53*\abs(m1*c1) + 0x1p-1074; */
-    /*@ assert r2: -(0x1p-53*(\abs(t) + \abs(m0*c0) + 0x1.00001p-53*(1*\abs(t) + 2*\abs(m0*c0)) + 3*0x1p-1074 + \abs(m1*c1) + 0x1p-53*\abs(m1*c1) + 0x1p-1074) + 0x1p-1074) <= s2 - (s1 + p1) <= 0x1p-53*(\abs(t) + \abs(m0*c0) + 0x1.00001p-53*(1*\abs(t) + 2*\abs(m0*c0)) + 3*0x1p-1074 + \abs(m1*c1) + 0x1p-53*\abs(m1*c1) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e2: -(0x1.00001p-53*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*0x1p-1074) <= s2 - (t + m0*c0 + m1*c1) <= 0x1.00001p-53*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*0x1p-1074; */
-    double s3 = cbx_add_rn(s2, p2);
-    /*@ assert a3: -(\abs(t) + \abs(m0*c0) + \abs(m1*c1) + 0x1.00001p-53*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*0x1p-1074 + \abs(m2*c2) + 0x1p-53*\abs(m2*c2) + 0x1p-1074) <= s2 + p2 <= \abs(t) + \abs(m0*c0) + \abs(m1*c1) + 0x1.00001p-53*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*0x1p-1074 + \abs(m2*c2) + 0x1p-53*\abs(m2*c2) + 0x1p-1074; */
-    /*@ assert r3: -(0x1p-53*(\abs(t) + \abs(m0*c0) + \abs(m1*c1) + 0x1.00001p-53*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*0x1p-1074 + \abs(m2*c2) + 0x1p-53*\abs(m2*c2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + p2) <= 0x1p-53*(\abs(t) + \abs(m0*c0) + \abs(m1*c1) + 0x1.00001p-53*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*0x1p-1074 + \abs(m2*c2) + 0x1p-53*\abs(m2*c2) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*\abs(m0*c0) + 3*\abs(m1*c1) + 2*\abs(m2*c2)) + 9*0x1p-1074) <= s3 - (t + m0*c0 + m1*c1 + m2*c2) <= 0x1.00001p-53*(3*\abs(t) + 4*\abs(m0*c0) + 3*\abs(m1*c1) + 2*\abs(m2*c2)) + 9*0x1p-1074; */
-    /*@ assert e3s: -(0x1.00001p-51 * (\abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2)) + 10*0x1p-1074) <= s3 - crow_c(m0, m1, m2, t, c0, c1, c2) <= 0x1.00001p-51 * (\abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2)) + 10*0x1p-1074; */
-    double k1 = cbx_add_rn(q0, q1);
-    double k2 = cbx_add_rn(k1, q2);
-    /*@ assert kk: crow_h(m0, m1, m2, h0, h1, h2) - 3*0x1.00001p-53*crow_h(m0, m1, m2, h0, h1, h2) - 5*0x1p-1074 <= k2 <= crow_h(m0, m1, m2, h0, h1, h2)+ 3*0x1.00001p-53*crow_h(m0, m1, m2, h0, h1, h2) + 6*0x1p-1074; */
-    double g0 = cbx_add_rn(cbx_abs(p0), q0);
-    /*@ assert g0b: (\abs(m0*c0) + \abs(m0*h0)) * (1 - 0x1p-51) - 3*0x1p-1074 <= g0 <= (\abs(m0*c0) + \abs(m0*h0)) * (1 + 0x1p-51) + 4*0x1p-1074; */
-    double g1 = cbx_add_rn(cbx_abs(p1), q1);
-    /*@ assert g1b: (\abs(m1*c1) + \abs(m1*h1)) * (1 - 0x1p-51) - 3*0x1p-1074 <= g1 <= (\abs(m1*c1) + \abs(m1*h1)) * (1 + 0x1p-51) + 4*0x1p-1074; */
-    double g2 = cbx_add_rn(cbx_abs(p2), q2);
-    /*@ assert g2b: (\abs(m2*c2) + \abs(m2*h2)) * (1 - 0x1p-51) - 3*0x1p-1074 <= g2 <= (\abs(m2*c2) + \abs(m2*h2)) * (1 + 0x1p-51) + 4*0x1p-1074; */
-    double w = cbx_widening(t, g0, g1, g2);
-    /*@ assert w1: w >= 0x1.6p-51 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 - 0x1p-49) + 0x1p-1068 - 0x1p-1071; */
-    /*@ assert w2: w <= 0x1.6p-51 * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 + 0x1p-49) + 0x1p-1066 + 0x1p-1071; */
+    cbx_fp p0 = cbx_mul_rn(m0, c0);
+    cbx_fp p1 = cbx_mul_rn(m1, c1);
+    cbx_fp p2 = cbx_mul_rn(m2, c2);
+    cbx_fp q0 = cbx_abs(cbx_mul_rn(m0, h0));
+    cbx_fp q1 = cbx_abs(cbx_mul_rn(m1, h1));
+    cbx_fp q2 = cbx_abs(cbx_mul_rn(m2, h2));
+    /*@ assert M: \abs(m0*c0) <= CBX_RT && \abs(m1*c1) <= CBX_RT && \abs(m2*c2) <= CBX_RT
+                  && \abs(m0*h0) <= CBX_RT && \abs(m1*h1) <= CBX_RT && \abs(m2*h2) <= CBX_RT; */
+    /*@ assert p0e: -(CBX_U*\abs(m0*c0) + CBX_ETA) <= p0 - m0*c0 <= CBX_U*\abs(m0*c0) + CBX_ETA; */
+    /*@ assert q0e: -(CBX_U*\abs(m0*h0) + CBX_ETA) <= q0 - \abs(m0*h0) <= CBX_U*\abs(m0*h0) + CBX_ETA; */
+    /*@ assert p1e: -(CBX_U*\abs(m1*c1) + CBX_ETA) <= p1 - m1*c1 <= CBX_U*\abs(m1*c1) + CBX_ETA; */
+    /*@ assert q1e: -(CBX_U*\abs(m1*h1) + CBX_ETA) <= q1 - \abs(m1*h1) <= CBX_U*\abs(m1*h1) + CBX_ETA; */
+    /*@ assert p2e: -(CBX_U*\abs(m2*c2) + CBX_ETA) <= p2 - m2*c2 <= CBX_U*\abs(m2*c2) + CBX_ETA; */
+    /*@ assert q2e: -(CBX_U*\abs(m2*h2) + CBX_ETA) <= q2 - \abs(m2*h2) <= CBX_U*\abs(m2*h2) + CBX_ETA; */
+    cbx_fp s1 = cbx_add_rn(t, p0);
+    /*@ assert a1: -(\abs(t) + \abs(m0*c0) + CBX_U*\abs(m0*c0) + CBX_ETA) <= t + p0 <= \abs(t) + \abs(m0*c0) + CBX_U*\abs(m0*c0) + CBX_ETA; */
+    /*@ assert r1: -(CBX_U*(\abs(t) + \abs(m0*c0) + CBX_U*\abs(m0*c0) + CBX_ETA) + CBX_ETA) <= s1 - (t + p0) <= CBX_U*(\abs(t) + \abs(m0*c0) + CBX_U*\abs(m0*c0) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e1: -(CBX_UP*(1*\abs(t) + 2*\abs(m0*c0)) + 3*CBX_ETA) <= s1 - (t + m0*c0) <= CBX_UP*(1*\abs(t) + 2*\abs(m0*c0)) + 3*CBX_ETA; */
+    cbx_fp s2 = cbx_add_rn(s1, p1);
+    /*@ assert a2: -(\abs(t) + \abs(m0*c0) + CBX_UP*(1*\abs(t) + 2*\abs(m0*c0)) + 3*CBX_ETA + \abs(m1*c1) + CBX_U*\abs(m1*c1) + CBX_ETA) <= s1 + p1 <= \abs(t) + \abs(m0*c0) + CBX_UP*(1*\abs(t) + 2*\abs(m0*c0)) + 3*CBX_ETA + \abs(m1*c1) + CBX_U*\abs(m1*c1) + CBX_ETA; */
+    /*@ assert r2: -(CBX_U*(\abs(t) + \abs(m0*c0) + CBX_UP*(1*\abs(t) + 2*\abs(m0*c0)) + 3*CBX_ETA + \abs(m1*c1) + CBX_U*\abs(m1*c1) + CBX_ETA) + CBX_ETA) <= s2 - (s1 + p1) <= CBX_U*(\abs(t) + \abs(m0*c0) + CBX_UP*(1*\abs(t) + 2*\abs(m0*c0)) + 3*CBX_ETA + \abs(m1*c1) + CBX_U*\abs(m1*c1) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e2: -(CBX_UP*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*CBX_ETA) <= s2 - (t + m0*c0 + m1*c1) <= CBX_UP*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*CBX_ETA; */
+    cbx_fp s3 = cbx_add_rn(s2, p2);
+    /*@ assert a3: -(\abs(t) + \abs(m0*c0) + \abs(m1*c1) + CBX_UP*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*CBX_ETA + \abs(m2*c2) + CBX_U*\abs(m2*c2) + CBX_ETA) <= s2 + p2 <= \abs(t) + \abs(m0*c0) + \abs(m1*c1) + CBX_UP*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*CBX_ETA + \abs(m2*c2) + CBX_U*\abs(m2*c2) + CBX_ETA; */
+    /*@ assert r3: -(CBX_U*(\abs(t) + \abs(m0*c0) + \abs(m1*c1) + CBX_UP*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*CBX_ETA + \abs(m2*c2) + CBX_U*\abs(m2*c2) + CBX_ETA) + CBX_ETA) <= s3 - (s2 + p2) <= CBX_U*(\abs(t) + \abs(m0*c0) + \abs(m1*c1) + CBX_UP*(2*\abs(t) + 3*\abs(m0*c0) + 2*\abs(m1*c1)) + 6*CBX_ETA + \abs(m2*c2) + CBX_U*\abs(m2*c2) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e3: -(CBX_UP*(3*\abs(t) + 4*\abs(m0*c0) + 3*\abs(m1*c1) + 2*\abs(m2*c2)) + 9*CBX_ETA) <= s3 - (t + m0*c0 + m1*c1 + m2*c2) <= CBX_UP*(3*\abs(t) + 4*\abs(m0*c0) + 3*\abs(m1*c1) + 2*\abs(m2*c2)) + 9*CBX_ETA; */
+    /*@ assert e3s: -(CBX_U4P * (\abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2)) + 10*CBX_ETA) <= s3 - crow_c(m0, m1, m2, t, c0, c1, c2) <= CBX_U4P * (\abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2)) + 10*CBX_ETA; */
+    cbx_fp k1 = cbx_add_rn(q0, q1);
+    cbx_fp k2 = cbx_add_rn(k1, q2);
+    /*@ assert kk: crow_h(m0, m1, m2, h0, h1, h2) - 3*CBX_UP*crow_h(m0, m1, m2, h0, h1, h2) - 5*CBX_ETA <= k2 <= crow_h(m0, m1, m2, h0, h1, h2)+ 3*CBX_UP*crow_h(m0, m1, m2, h0, h1, h2) + 6*CBX_ETA; */
+    cbx_fp g0 = cbx_add_rn(cbx_abs(p0), q0);
+    /*@ assert g0b: (\abs(m0*c0) + \abs(m0*h0)) * (1 - CBX_U4) - 3*CBX_ETA <= g0 <= (\abs(m0*c0) + \abs(m0*h0)) * (1 + CBX_U4) + 4*CBX_ETA; */
+    cbx_fp g1 = cbx_add_rn(cbx_abs(p1), q1);
+    /*@ assert g1b: (\abs(m1*c1) + \abs(m1*h1)) * (1 - CBX_U4) - 3*CBX_ETA <= g1 <= (\abs(m1*c1) + \abs(m1*h1)) * (1 + CBX_U4) + 4*CBX_ETA; */
+    cbx_fp g2 = cbx_add_rn(cbx_abs(p2), q2);
+    /*@ assert g2b: (\abs(m2*c2) + \abs(m2*h2)) * (1 - CBX_U4) - 3*CBX_ETA <= g2 <= (\abs(m2*c2) + \abs(m2*h2)) * (1 + CBX_U4) + 4*CBX_ETA; */
+    cbx_fp w = cbx_widening(t, g0, g1, g2);
+    /*@ assert w1: w >= CBX_U5H * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 - CBX_U16) + CBX_ETA64 - CBX_ETA8; */
+    /*@ assert w2: w <= CBX_U5H * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 + CBX_U16) + CBX_ETA256 + CBX_ETA8; */
     cbox_res r;
     r.c = s3;
     r.h = cbx_add_rn(k2, w);
     return r;
 }
 
-typedef struct cbox_axis_result { double c, h; int ok; } cbox_axis_result;
+typedef struct cbox_axis_result { cbx_fp c, h; int ok; } cbox_axis_result;
 
 /* The kernel on a full row; else, on a finite map row, the kernel on the
  * row with its zero-coefficient columns dropped (their c and h count as 0:
@@ -87,12 +87,12 @@ typedef struct cbox_axis_result { double c, h; int ok; } cbox_axis_result;
        || crow_dfull(m0, m1, m2, t, c0, c1, c2, h0, h1, h2));
     ensures sound: caxis_sound_s(\result.c, \result.h, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
 */
-static cbox_axis_result cbox_transform_axis(double m0, double m1, double m2, double t,
-                                            double c0, double c1, double c2,
-                                            double h0, double h1, double h2)
+static cbox_axis_result cbox_transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                                            cbx_fp c0, cbx_fp c1, cbx_fp c2,
+                                            cbx_fp h0, cbx_fp h1, cbx_fp h2)
 {
     cbox_axis_result r;
-    r.c = 0.0;
+    r.c = CBX_C(0.0);
     r.h = cbx_pinf();
     r.ok = 0;
     if (cbx_row_ok(m0, m1, m2, t, c0, h0, c1, h1, c2, h2)) {
@@ -101,9 +101,9 @@ static cbox_axis_result cbox_transform_axis(double m0, double m1, double m2, dou
         r.h = k.h;
         r.ok = 1;
     } else if (cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)) {
-        double e0 = m0 == 0.0 ? 0.0 : c0, g0 = m0 == 0.0 ? 0.0 : h0;
-        double e1 = m1 == 0.0 ? 0.0 : c1, g1 = m1 == 0.0 ? 0.0 : h1;
-        double e2 = m2 == 0.0 ? 0.0 : c2, g2 = m2 == 0.0 ? 0.0 : h2;
+        cbx_fp e0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : c0, g0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : h0;
+        cbx_fp e1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : c1, g1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : h1;
+        cbx_fp e2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : c2, g2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : h2;
         /*@ assert dz: e0 == dz(m0, c0) && e1 == dz(m1, c1) && e2 == dz(m2, c2)
                        && g0 == dz(m0, h0) && g1 == dz(m1, h1) && g2 == dz(m2, h2); */
         if (cbx_row_ok(m0, m1, m2, t, e0, g0, e1, g1, e2, g2)) {
@@ -141,8 +141,8 @@ static int cbox_any_nan(const cbx_affine *a, const cbx_cbox *in)
 */
 static int cbox_any_negative(const cbx_cbox *in)
 {
-    return cbx_is_inverted(0.0, in->h[0]) || cbx_is_inverted(0.0, in->h[1])
-           || cbx_is_inverted(0.0, in->h[2]);
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) || cbx_is_inverted(CBX_C(0.0), in->h[1])
+           || cbx_is_inverted(CBX_C(0.0), in->h[2]);
 }
 
 /*@ requires \valid(out);
@@ -151,9 +151,9 @@ static int cbox_any_negative(const cbx_cbox *in)
 */
 static void cbox_set_whole(cbx_cbox *out)
 {
-    out->c[0] = 0.0; out->h[0] = cbx_pinf();
-    out->c[1] = 0.0; out->h[1] = cbx_pinf();
-    out->c[2] = 0.0; out->h[2] = cbx_pinf();
+    out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
+    out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
+    out->c[2] = CBX_C(0.0); out->h[2] = cbx_pinf();
 }
 
 /*@ requires \valid(out);
@@ -162,9 +162,9 @@ static void cbox_set_whole(cbx_cbox *out)
 */
 static void cbox_set_empty(cbx_cbox *out)
 {
-    out->c[0] = 0.0; out->h[0] = cbx_ninf();
-    out->c[1] = 0.0; out->h[1] = cbx_ninf();
-    out->c[2] = 0.0; out->h[2] = cbx_ninf();
+    out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
+    out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
+    out->c[2] = CBX_C(0.0); out->h[2] = cbx_ninf();
 }
 
 cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox *out)
@@ -177,11 +177,11 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
         cbox_set_empty(out);
         return CBX_EMPTY;
     }
-    double c0 = in->c[0], c1 = in->c[1], c2 = in->c[2];
-    double h0 = in->h[0], h1 = in->h[1], h2 = in->h[2];
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp c0 = in->c[0], c1 = in->c[1], c2 = in->c[2];
+    cbx_fp h0 = in->h[0], h1 = in->h[1], h2 = in->h[2];
+    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
     cbox_axis_result r0 = cbox_transform_axis(a00, a01, a02, a03, c0, c1, c2, h0, h1, h2);
     cbox_axis_result r1 = cbox_transform_axis(a10, a11, a12, a13, c0, c1, c2, h0, h1, h2);
     cbox_axis_result r2 = cbox_transform_axis(a20, a21, a22, a23, c0, c1, c2, h0, h1, h2);

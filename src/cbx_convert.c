@@ -21,34 +21,34 @@
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
     ensures sound: \result.a - \result.b <= lo && hi <= \result.a + \result.b;
 */
-static conv_res b2c(double lo, double hi)
+static conv_res b2c(cbx_fp lo, cbx_fp hi)
 {
-    double a = cbx_mul_rn(lo, 0.5);
-    double b = cbx_mul_rn(hi, 0.5);
-    double c = cbx_add_rn(a, b);
-    double d1 = cbx_sub_rn(hi, c);
-    double d2 = cbx_sub_rn(c, lo);
-    double d = cbx_max2(d1, d2);
-    /*@ assert x1: hi - c >= 0 ==> d1 >= 0 && (hi - c) * (1 - 0x1p-53) <= d1 + 0x1p-1074; */
-    /*@ assert x2: c - lo >= 0 ==> d2 >= 0 && (c - lo) * (1 - 0x1p-53) <= d2 + 0x1p-1074; */
+    cbx_fp a = cbx_mul_rn(lo, CBX_C(0.5));
+    cbx_fp b = cbx_mul_rn(hi, CBX_C(0.5));
+    cbx_fp c = cbx_add_rn(a, b);
+    cbx_fp d1 = cbx_sub_rn(hi, c);
+    cbx_fp d2 = cbx_sub_rn(c, lo);
+    cbx_fp d = cbx_max2(d1, d2);
+    /*@ assert x1: hi - c >= 0 ==> d1 >= 0 && (hi - c) * (1 - CBX_U) <= d1 + CBX_ETA; */
+    /*@ assert x2: c - lo >= 0 ==> d2 >= 0 && (c - lo) * (1 - CBX_U) <= d2 + CBX_ETA; */
     /*@ assert dpos: d >= 0; */
-    /*@ assert up1: hi - c <= d * (1 + 0x1p-52) + 0x1p-1073; */
-    /*@ assert up2: c - lo <= d * (1 + 0x1p-52) + 0x1p-1073; */
-    double e = cbx_mul_rn(cbx_max2(d, 0.0), 0x1p-50);
-    double f = cbx_add_rn(cbx_max2(d, 0.0), e);
+    /*@ assert up1: hi - c <= d * (1 + CBX_U2) + CBX_ETA2; */
+    /*@ assert up2: c - lo <= d * (1 + CBX_U2) + CBX_ETA2; */
+    cbx_fp e = cbx_mul_rn(cbx_max2(d, CBX_C(0.0)), CBX_K(U8));
+    cbx_fp f = cbx_add_rn(cbx_max2(d, CBX_C(0.0)), e);
     conv_res r;
     r.a = c;
-    r.b = cbx_add_rn(f, 0x1p-1070);
-    /*@ assert hb: r.b >= d * (1 + 0x1p-52) + 0x1p-1072; */
+    r.b = cbx_add_rn(f, CBX_K(ETA16));
+    /*@ assert hb: r.b >= d * (1 + CBX_U2) + CBX_ETA4; */
     return r;
 }
 
 /*@ assigns \nothing;
     ensures \result != 0 <==> (\is_finite(x) && \is_finite(y) && conv_dom(x, y));
 */
-static int conv_ok(double x, double y)
+static int conv_ok(cbx_fp x, cbx_fp y)
 {
-    return x >= -0x1p1019 && x <= 0x1p1019 && y >= -0x1p1019 && y <= 0x1p1019;
+    return x >= -CBX_K(R19) && x <= CBX_K(R19) && y >= -CBX_K(R19) && y <= CBX_K(R19);
 }
 
 /*@ requires \valid(out);
@@ -58,7 +58,7 @@ static int conv_ok(double x, double y)
 */
 static void cwhole_set(cbx_cbox *out, int i)
 {
-    out->c[i] = 0.0;
+    out->c[i] = CBX_C(0.0);
     out->h[i] = cbx_pinf();
 }
 
@@ -66,16 +66,16 @@ cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
 {
     if (cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
         || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2])) {
-        out->c[0] = 0.0; out->h[0] = cbx_pinf();
-        out->c[1] = 0.0; out->h[1] = cbx_pinf();
-        out->c[2] = 0.0; out->h[2] = cbx_pinf();
+        out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
+        out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
+        out->c[2] = CBX_C(0.0); out->h[2] = cbx_pinf();
         return CBX_EINVAL;
     }
     if (cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
         || cbx_no_point(in->lo[2], in->hi[2])) {
-        out->c[0] = 0.0; out->h[0] = cbx_ninf();
-        out->c[1] = 0.0; out->h[1] = cbx_ninf();
-        out->c[2] = 0.0; out->h[2] = cbx_ninf();
+        out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
+        out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
+        out->c[2] = CBX_C(0.0); out->h[2] = cbx_ninf();
         return CBX_EMPTY;
     }
     int k0 = conv_ok(in->lo[0], in->hi[0]);
@@ -111,8 +111,8 @@ cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
         out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
         return CBX_EINVAL;
     }
-    if (cbx_is_inverted(0.0, in->h[0]) || cbx_is_inverted(0.0, in->h[1])
-        || cbx_is_inverted(0.0, in->h[2])) {
+    if (cbx_is_inverted(CBX_C(0.0), in->h[0]) || cbx_is_inverted(CBX_C(0.0), in->h[1])
+        || cbx_is_inverted(CBX_C(0.0), in->h[2])) {
         out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
         out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
         out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();

@@ -8,43 +8,30 @@
 #define CBX_DOMAIN_H
 
 #include "certbox.h"
+#include "cbx_prec.h"
 
 /* One magnitude class: |m| <= bm and |c| <= bc (specs: cls). */
 /*@ requires fin: \is_finite(m) && \is_finite(c) && \is_finite(bm) && \is_finite(bc);
     assigns \nothing;
     ensures val: \result != 0 <==> cls(m, c, bm, bc);
 */
-static inline int cbx_cls(double m, double c, double bm, double bc)
+static inline int cbx_cls(cbx_fp m, cbx_fp c, cbx_fp bm, cbx_fp bc)
 {
     return m >= -bm && m <= bm && c >= -bc && c <= bc;
 }
 
-/* Run-time check of one product's domain class (specs: dom_pair).
- * The common class (both factors at most 2^509) comes first. */
+/* Run-time check of one product's domain class (specs: dom_pair), the
+ * classes of src/cbx_prec_begin.h in order.  The common class (both
+ * factors at most 2^509; 2^61 in binary32) comes first. */
+#define CBX_CLS_TRY(tag, bm, bc) if (cbx_cls(m, c, CBX_C(bm), CBX_C(bc))) return 1;
 /*@ requires fin: \is_finite(m) && \is_finite(c);
     assigns \nothing;
     ensures val: \result != 0 <==> dom_pair(m, c);
 */
-static inline int cbx_dom_pair(double m, double c)
+static inline int cbx_dom_pair(cbx_fp m, cbx_fp c)
 {
-    if (cbx_cls(m, c, 0x1p509, 0x1p509)) return 1;
-    if (cbx_cls(m, c, 0x1p0, 0x1p1018)) return 1;
-    if (cbx_cls(m, c, 0x1p64, 0x1p954)) return 1;
-    if (cbx_cls(m, c, 0x1p128, 0x1p890)) return 1;
-    if (cbx_cls(m, c, 0x1p192, 0x1p826)) return 1;
-    if (cbx_cls(m, c, 0x1p256, 0x1p762)) return 1;
-    if (cbx_cls(m, c, 0x1p320, 0x1p698)) return 1;
-    if (cbx_cls(m, c, 0x1p384, 0x1p634)) return 1;
-    if (cbx_cls(m, c, 0x1p448, 0x1p570)) return 1;
-    if (cbx_cls(m, c, 0x1p512, 0x1p506)) return 1;
-    if (cbx_cls(m, c, 0x1p576, 0x1p442)) return 1;
-    if (cbx_cls(m, c, 0x1p640, 0x1p378)) return 1;
-    if (cbx_cls(m, c, 0x1p704, 0x1p314)) return 1;
-    if (cbx_cls(m, c, 0x1p768, 0x1p250)) return 1;
-    if (cbx_cls(m, c, 0x1p832, 0x1p186)) return 1;
-    if (cbx_cls(m, c, 0x1p896, 0x1p122)) return 1;
-    if (cbx_cls(m, c, 0x1p960, 0x1p58)) return 1;
-    if (cbx_cls(m, c, 0x1p1018, 0x1p0)) return 1;
+    CBX_CLASS_HEAD(CBX_CLS_TRY)
+    CBX_CLASS_TAIL(CBX_CLS_TRY)
     return 0;
 }
 
@@ -52,7 +39,7 @@ static inline int cbx_dom_pair(double m, double c)
 /*@ assigns \nothing;
     ensures \result != 0 <==> \is_finite(x);
 */
-static inline int cbx_is_fin(double x) { return x >= -0x1.fffffffffffffp1023 && x <= 0x1.fffffffffffffp1023; }
+static inline int cbx_is_fin(cbx_fp x) { return x >= -CBX_K(FMAX) && x <= CBX_K(FMAX); }
 
 /* 1 when every input of one output row is finite and in the proven domain
  * (specs: row_in_dom).  One early return per test keeps the proof linear. */
@@ -63,8 +50,8 @@ static inline int cbx_is_fin(double x) { return x >= -0x1.fffffffffffffp1023 && 
        && \is_finite(l2) && \is_finite(h2)
        && row_in_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
 */
-static inline int cbx_row_ok(double m0, double m1, double m2, double t,
-                  double l0, double h0, double l1, double h1, double l2, double h2)
+static inline int cbx_row_ok(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                  cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
     if (!cbx_is_fin(m0)) return 0;
     if (!cbx_is_fin(m1)) return 0;
@@ -76,7 +63,7 @@ static inline int cbx_row_ok(double m0, double m1, double m2, double t,
     if (!cbx_is_fin(h1)) return 0;
     if (!cbx_is_fin(l2)) return 0;
     if (!cbx_is_fin(h2)) return 0;
-    if (!(t >= -0x1p1018 && t <= 0x1p1018)) return 0;
+    if (!(t >= -CBX_K(RT) && t <= CBX_K(RT))) return 0;
     if (!cbx_dom_pair(m0, l0)) return 0;
     if (!cbx_dom_pair(m0, h0)) return 0;
     if (!cbx_dom_pair(m1, l1)) return 0;
@@ -90,21 +77,21 @@ static inline int cbx_row_ok(double m0, double m1, double m2, double t,
 /*@ assigns \nothing;
     ensures \result != 0 <==> \is_NaN(x);
 */
-static inline int cbx_is_nan(double x) { return x != x; }
+static inline int cbx_is_nan(cbx_fp x) { return x != x; }
 
 /* 1 if hi < lo in IEEE comparison (the box is empty on that axis). */
 /*@ assigns \nothing;
-    ensures \result != 0 <==> \lt_double(hi, lo);
+    ensures \result != 0 <==> CBX_LT(hi, lo);
 */
-static inline int cbx_is_inverted(double lo, double hi) { return hi < lo; }
+static inline int cbx_is_inverted(cbx_fp lo, cbx_fp hi) { return hi < lo; }
 
 /* 1 if [lo, hi] has no real point: hi < lo, lo = +inf or hi = -inf. */
 /*@ assigns \nothing;
     ensures \result != 0 <==> no_point(lo, hi);
 */
-static inline int cbx_no_point(double lo, double hi)
+static inline int cbx_no_point(cbx_fp lo, cbx_fp hi)
 {
-    return hi < lo || lo > 0x1.fffffffffffffp1023 || hi < -0x1.fffffffffffffp1023;
+    return hi < lo || lo > CBX_K(FMAX) || hi < -CBX_K(FMAX);
 }
 
 #endif /* CBX_DOMAIN_H */

@@ -42,7 +42,12 @@ cbx_dd cbx_two_sum(double a, double b);
 */
 cbx_dd cbx_two_prod(double a, double b);
 #else
+#if defined(__GNUC__)
+#define CBX_FMA __builtin_fma /* gcc and clang: no <math.h> (freestanding) */
+#else
 #include <math.h>
+#define CBX_FMA fma
+#endif
 static inline cbx_dd cbx_two_sum(double a, double b)
 {
     cbx_dd r;
@@ -58,7 +63,7 @@ static inline cbx_dd cbx_two_prod(double a, double b)
 {
     cbx_dd r;
     r.hi = a * b;
-    r.lo = fma(a, b, -r.hi);
+    r.lo = CBX_FMA(a, b, -r.hi);
     return r;
 }
 #endif

@@ -20,12 +20,12 @@
     requires dom: in_dom(m, l) && in_dom(m, h);
     assigns \nothing;
     ensures fin: \is_finite(\result);
-    ensures err: \abs(\result - tmin(m, l, h)) <= 0x1p-53 * tmag(m, l, h) + 0x1p-1074;
+    ensures err: \abs(\result - tmin(m, l, h)) <= CBX_U * tmag(m, l, h) + CBX_ETA;
 */
-static inline double term_lo(double m, double l, double h)
+static inline cbx_fp term_lo(cbx_fp m, cbx_fp l, cbx_fp h)
 {
-    double p = cbx_mul_rn(m, l);
-    double q = cbx_mul_rn(m, h);
+    cbx_fp p = cbx_mul_rn(m, l);
+    cbx_fp q = cbx_mul_rn(m, h);
     return cbx_min2(p, q);
 }
 
@@ -34,12 +34,12 @@ static inline double term_lo(double m, double l, double h)
     requires dom: in_dom(m, l) && in_dom(m, h);
     assigns \nothing;
     ensures fin: \is_finite(\result);
-    ensures err: \abs(\result - tmax(m, l, h)) <= 0x1p-53 * tmag(m, l, h) + 0x1p-1074;
+    ensures err: \abs(\result - tmax(m, l, h)) <= CBX_U * tmag(m, l, h) + CBX_ETA;
 */
-static inline double term_hi(double m, double l, double h)
+static inline cbx_fp term_hi(cbx_fp m, cbx_fp l, cbx_fp h)
 {
-    double p = cbx_mul_rn(m, l);
-    double q = cbx_mul_rn(m, h);
+    cbx_fp p = cbx_mul_rn(m, l);
+    cbx_fp q = cbx_mul_rn(m, h);
     return cbx_max2(p, q);
 }
 
@@ -48,14 +48,14 @@ static inline double term_hi(double m, double l, double h)
     requires dom: in_dom(m, l) && in_dom(m, h);
     assigns \nothing;
     ensures fin: \is_finite(\result);
-    ensures lo: \result >= tmag(m, l, h) - 0x1p-53 * tmag(m, l, h) - 0x1p-1074;
-    ensures hi: \result <= tmag(m, l, h) + 0x1p-53 * tmag(m, l, h) + 0x1p-1074;
+    ensures lo: \result >= tmag(m, l, h) - CBX_U * tmag(m, l, h) - CBX_ETA;
+    ensures hi: \result <= tmag(m, l, h) + CBX_U * tmag(m, l, h) + CBX_ETA;
     ensures pos: \result >= 0;
 */
-static inline double term_mag(double m, double l, double h)
+static inline cbx_fp term_mag(cbx_fp m, cbx_fp l, cbx_fp h)
 {
-    double p = cbx_mul_rn(m, l);
-    double q = cbx_mul_rn(m, h);
+    cbx_fp p = cbx_mul_rn(m, l);
+    cbx_fp q = cbx_mul_rn(m, h);
     return cbx_max2(cbx_abs(p), cbx_abs(q));
 }
 
@@ -65,47 +65,47 @@ static inline double term_mag(double m, double l, double h)
                    && \is_finite(l2) && \is_finite(h2);
     requires dom: in_dom(m0, l0) && in_dom(m0, h0) && in_dom(m1, l1) && in_dom(m1, h1)
                   && in_dom(m2, l2) && in_dom(m2, h2);
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures sound: \result <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     ensures tight: lo_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
-static double axis_lo(double m0, double m1, double m2, double t,
-                      double l0, double h0, double l1, double h1, double l2, double h2)
+static cbx_fp axis_lo(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
-    double d0 = term_lo(m0, l0, h0);
-    double d1 = term_lo(m1, l1, h1);
-    double d2 = term_lo(m2, l2, h2);
-    double g0 = term_mag(m0, l0, h0);
-    double g1 = term_mag(m1, l1, h1);
-    double g2 = term_mag(m2, l2, h2);
-    /*@ assert M: 0 <= tmag(m0, l0, h0) <= 0x1p1018 && 0 <= tmag(m1, l1, h1) <= 0x1p1018
-                  && 0 <= tmag(m2, l2, h2) <= 0x1p1018; */
+    cbx_fp d0 = term_lo(m0, l0, h0);
+    cbx_fp d1 = term_lo(m1, l1, h1);
+    cbx_fp d2 = term_lo(m2, l2, h2);
+    cbx_fp g0 = term_mag(m0, l0, h0);
+    cbx_fp g1 = term_mag(m1, l1, h1);
+    cbx_fp g2 = term_mag(m2, l2, h2);
+    /*@ assert M: 0 <= tmag(m0, l0, h0) <= CBX_RT && 0 <= tmag(m1, l1, h1) <= CBX_RT
+                  && 0 <= tmag(m2, l2, h2) <= CBX_RT; */
     /*@ assert X0: -(tmag(m0, l0, h0)) <= tmin(m0, l0, h0) <= tmag(m0, l0, h0); */
-    /*@ assert d0e: -(0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= d0 - tmin(m0, l0, h0) <= 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
+    /*@ assert d0e: -(CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= d0 - tmin(m0, l0, h0) <= CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
     /*@ assert X1: -(tmag(m1, l1, h1)) <= tmin(m1, l1, h1) <= tmag(m1, l1, h1); */
-    /*@ assert d1e: -(0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= d1 - tmin(m1, l1, h1) <= 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
+    /*@ assert d1e: -(CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= d1 - tmin(m1, l1, h1) <= CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
     /*@ assert X2: -(tmag(m2, l2, h2)) <= tmin(m2, l2, h2) <= tmag(m2, l2, h2); */
-    /*@ assert d2e: -(0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= d2 - tmin(m2, l2, h2) <= 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
-    double s1 = cbx_add_rn(t, d0);
-    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
-    /*@ assert r1: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074) <= s1 - (t + d0) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e1: -(0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074) <= s1 - (t + tmin(m0, l0, h0)) <= 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074; */
-    double s2 = cbx_add_rn(s1, d1);
-    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
-    /*@ assert r2: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074) <= s2 - (s1 + d1) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e2: -(0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074) <= s2 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1)) <= 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074; */
-    double s3 = cbx_add_rn(s2, d2);
-    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
-    /*@ assert r3: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + d2) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074) <= s3 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2)) <= 0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074; */
-    /*@ assert e3s: -(0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074) <= s3 - row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074; */
-    double w = cbx_widening(t, g0, g1, g2);
-    /*@ assert w1: w >= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - 0x1p-49)
-                        + 0x1p-1068 - 0x1p-1071; */
-    /*@ assert w2: w <= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + 0x1p-49)
-                        + 0x1p-1066 + 0x1p-1071; */
+    /*@ assert d2e: -(CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= d2 - tmin(m2, l2, h2) <= CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
+    cbx_fp s1 = cbx_add_rn(t, d0);
+    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
+    /*@ assert r1: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA) <= s1 - (t + d0) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e1: -(CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA) <= s1 - (t + tmin(m0, l0, h0)) <= CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA; */
+    cbx_fp s2 = cbx_add_rn(s1, d1);
+    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
+    /*@ assert r2: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA) <= s2 - (s1 + d1) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e2: -(CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA) <= s2 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1)) <= CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA; */
+    cbx_fp s3 = cbx_add_rn(s2, d2);
+    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
+    /*@ assert r3: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA) <= s3 - (s2 + d2) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e3: -(CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA) <= s3 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2)) <= CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA; */
+    /*@ assert e3s: -(CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA) <= s3 - row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA; */
+    cbx_fp w = cbx_widening(t, g0, g1, g2);
+    /*@ assert w1: w >= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - CBX_U16)
+                        + CBX_ETA64 - CBX_ETA8; */
+    /*@ assert w2: w <= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + CBX_U16)
+                        + CBX_ETA256 + CBX_ETA8; */
     return cbx_sub_rn(s3, w);
 }
 
@@ -115,47 +115,47 @@ static double axis_lo(double m0, double m1, double m2, double t,
                    && \is_finite(l2) && \is_finite(h2);
     requires dom: in_dom(m0, l0) && in_dom(m0, h0) && in_dom(m1, l1) && in_dom(m1, h1)
                   && in_dom(m2, l2) && in_dom(m2, h2);
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures sound: \result >= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     ensures tight: hi_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
-static double axis_hi(double m0, double m1, double m2, double t,
-                      double l0, double h0, double l1, double h1, double l2, double h2)
+static cbx_fp axis_hi(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
-    double d0 = term_hi(m0, l0, h0);
-    double d1 = term_hi(m1, l1, h1);
-    double d2 = term_hi(m2, l2, h2);
-    double g0 = term_mag(m0, l0, h0);
-    double g1 = term_mag(m1, l1, h1);
-    double g2 = term_mag(m2, l2, h2);
-    /*@ assert M: 0 <= tmag(m0, l0, h0) <= 0x1p1018 && 0 <= tmag(m1, l1, h1) <= 0x1p1018
-                  && 0 <= tmag(m2, l2, h2) <= 0x1p1018; */
+    cbx_fp d0 = term_hi(m0, l0, h0);
+    cbx_fp d1 = term_hi(m1, l1, h1);
+    cbx_fp d2 = term_hi(m2, l2, h2);
+    cbx_fp g0 = term_mag(m0, l0, h0);
+    cbx_fp g1 = term_mag(m1, l1, h1);
+    cbx_fp g2 = term_mag(m2, l2, h2);
+    /*@ assert M: 0 <= tmag(m0, l0, h0) <= CBX_RT && 0 <= tmag(m1, l1, h1) <= CBX_RT
+                  && 0 <= tmag(m2, l2, h2) <= CBX_RT; */
     /*@ assert X0: -(tmag(m0, l0, h0)) <= tmax(m0, l0, h0) <= tmag(m0, l0, h0); */
-    /*@ assert d0e: -(0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= d0 - tmax(m0, l0, h0) <= 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
+    /*@ assert d0e: -(CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= d0 - tmax(m0, l0, h0) <= CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
     /*@ assert X1: -(tmag(m1, l1, h1)) <= tmax(m1, l1, h1) <= tmag(m1, l1, h1); */
-    /*@ assert d1e: -(0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= d1 - tmax(m1, l1, h1) <= 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
+    /*@ assert d1e: -(CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= d1 - tmax(m1, l1, h1) <= CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
     /*@ assert X2: -(tmag(m2, l2, h2)) <= tmax(m2, l2, h2) <= tmag(m2, l2, h2); */
-    /*@ assert d2e: -(0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= d2 - tmax(m2, l2, h2) <= 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
-    double s1 = cbx_add_rn(t, d0);
-    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074; */
-    /*@ assert r1: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074) <= s1 - (t + d0) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1p-53*tmag(m0, l0, h0) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e1: -(0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074) <= s1 - (t + tmax(m0, l0, h0)) <= 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074; */
-    double s2 = cbx_add_rn(s1, d1);
-    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074; */
-    /*@ assert r2: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074) <= s2 - (s1 + d1) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + 0x1.00001p-53*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*0x1p-1074 + tmag(m1, l1, h1) + 0x1p-53*tmag(m1, l1, h1) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e2: -(0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074) <= s2 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1)) <= 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074; */
-    double s3 = cbx_add_rn(s2, d2);
-    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074; */
-    /*@ assert r3: -(0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074) <= s3 - (s2 + d2) <= 0x1p-53*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + 0x1.00001p-53*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*0x1p-1074 + tmag(m2, l2, h2) + 0x1p-53*tmag(m2, l2, h2) + 0x1p-1074) + 0x1p-1074; */
-    /*@ assert e3: -(0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074) <= s3 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2)) <= 0x1.00001p-53*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*0x1p-1074; */
-    /*@ assert e3s: -(0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074) <= s3 - row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 0x1.00001p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*0x1p-1074; */
-    double w = cbx_widening(t, g0, g1, g2);
-    /*@ assert w1: w >= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - 0x1p-49)
-                        + 0x1p-1068 - 0x1p-1071; */
-    /*@ assert w2: w <= 0x1.6p-51 * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + 0x1p-49)
-                        + 0x1p-1066 + 0x1p-1071; */
+    /*@ assert d2e: -(CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= d2 - tmax(m2, l2, h2) <= CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
+    cbx_fp s1 = cbx_add_rn(t, d0);
+    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
+    /*@ assert r1: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA) <= s1 - (t + d0) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e1: -(CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA) <= s1 - (t + tmax(m0, l0, h0)) <= CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA; */
+    cbx_fp s2 = cbx_add_rn(s1, d1);
+    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
+    /*@ assert r2: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA) <= s2 - (s1 + d1) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e2: -(CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA) <= s2 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1)) <= CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA; */
+    cbx_fp s3 = cbx_add_rn(s2, d2);
+    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
+    /*@ assert r3: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA) <= s3 - (s2 + d2) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA; */
+    /*@ assert e3: -(CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA) <= s3 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2)) <= CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA; */
+    /*@ assert e3s: -(CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA) <= s3 - row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA; */
+    cbx_fp w = cbx_widening(t, g0, g1, g2);
+    /*@ assert w1: w >= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - CBX_U16)
+                        + CBX_ETA64 - CBX_ETA8; */
+    /*@ assert w2: w <= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + CBX_U16)
+                        + CBX_ETA256 + CBX_ETA8; */
     return cbx_add_rn(s3, w);
 }
 
@@ -198,7 +198,7 @@ static void set_empty(cbx_box *out)
     ensures sound: \result <= m0*v0 + m1*v1 + m2*v2 + t;
     ensures tight: lo_tight(\result, m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
 */
-static double point_lo(double m0, double m1, double m2, double t, double v0, double v1, double v2)
+static cbx_fp point_lo(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t, cbx_fp v0, cbx_fp v1, cbx_fp v2)
 {
     return axis_lo(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
 }
@@ -210,7 +210,7 @@ static double point_lo(double m0, double m1, double m2, double t, double v0, dou
     ensures sound: \result >= m0*v0 + m1*v1 + m2*v2 + t;
     ensures tight: hi_tight(\result, m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
 */
-static double point_hi(double m0, double m1, double m2, double t, double v0, double v1, double v2)
+static cbx_fp point_hi(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t, cbx_fp v0, cbx_fp v1, cbx_fp v2)
 {
     return axis_hi(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
 }
@@ -224,8 +224,8 @@ static double point_hi(double m0, double m1, double m2, double t, double v0, dou
     ensures ok: \result.ok != 0 <==> (row_unb_lo(m0, m1, m2, l0, h0, l1, h1, l2, h2)
                                       || vdom_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
 */
-static end_result ext_lo(double m0, double m1, double m2, double t,
-                         double l0, double h0, double l1, double h1, double l2, double h2)
+static end_result ext_lo(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
     end_result r;
     end_result v0 = vertex_lo(m0, l0, h0);
@@ -255,8 +255,8 @@ static end_result ext_lo(double m0, double m1, double m2, double t,
     ensures ok: \result.ok != 0 <==> (row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
                                       || vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2));
 */
-static end_result ext_hi(double m0, double m1, double m2, double t,
-                         double l0, double h0, double l1, double h1, double l2, double h2)
+static end_result ext_hi(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                         cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
     end_result r;
     end_result v0 = vertex_hi(m0, l0, h0);
@@ -279,7 +279,7 @@ static end_result ext_hi(double m0, double m1, double m2, double t,
 
 /* One output axis: the proven kernel on a full row, each end from its
  * vertex on a finite map row, the whole line [-inf, +inf] otherwise. */
-typedef struct axis_result { double lo, hi; int ok; } axis_result;
+typedef struct axis_result { cbx_fp lo, hi; int ok; } axis_result;
 
 /*@ requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
                   && !\is_NaN(l2) && !\is_NaN(h2);
@@ -287,9 +287,9 @@ typedef struct axis_result { double lo, hi; int ok; } axis_result;
     ensures ok: \result.ok != 0 <==> axis_ok_s(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     ensures sound: axis_sound_s(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
-static axis_result transform_axis(double m0, double m1, double m2, double t,
-                                  double l0, double h0, double l1, double h1,
-                                  double l2, double h2)
+static axis_result transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                                  cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1,
+                                  cbx_fp l2, cbx_fp h2)
 {
     axis_result r;
     if (cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) {
@@ -351,11 +351,11 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
         set_empty(out);
         return CBX_EMPTY;
     }
-    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
+    cbx_fp h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
+    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
     axis_result r0 = transform_axis(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
     axis_result r1 = transform_axis(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
     axis_result r2 = transform_axis(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);

@@ -20,36 +20,36 @@
 
 /* An upper bound r of the norm of (b0, b1, b2): b . b <= r^2. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
-    requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
-                  && cls(b2, b2, 0x1p509, 0x1p509);
+    requires rng: cls(b0, b0, CBX_SB, CBX_SB) && cls(b1, b1, CBX_SB, CBX_SB)
+                  && cls(b2, b2, CBX_SB, CBX_SB);
     assigns \nothing;
-    ensures fin: \is_finite(\result) && 0 <= \result <= 0x1p512;
+    ensures fin: \is_finite(\result) && 0 <= \result <= CBX_SR2;
     ensures bound: sq_bound(b0, b1, b2, \result);
 */
-static double ball_radius(double b0, double b1, double b2)
+static cbx_fp ball_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
 {
-    double q0 = cbx_mul_rn(b0, b0);
-    double q1 = cbx_mul_rn(b1, b1);
-    double q2 = cbx_mul_rn(b2, b2);
+    cbx_fp q0 = cbx_mul_rn(b0, b0);
+    cbx_fp q1 = cbx_mul_rn(b1, b1);
+    cbx_fp q2 = cbx_mul_rn(b2, b2);
     /*@ assert sq: b0*b0 >= 0 && b1*b1 >= 0 && b2*b2 >= 0; */
-    /*@ assert q: q0 >= b0*b0 * (1 - 0x1p-53) - 0x1p-1074 && q1 >= b1*b1 * (1 - 0x1p-53) - 0x1p-1074
-                  && q2 >= b2*b2 * (1 - 0x1p-53) - 0x1p-1074; */
+    /*@ assert q: q0 >= b0*b0 * (1 - CBX_U) - CBX_ETA && q1 >= b1*b1 * (1 - CBX_U) - CBX_ETA
+                  && q2 >= b2*b2 * (1 - CBX_U) - CBX_ETA; */
     /*@ assert qpos: q0 >= 0 && q1 >= 0 && q2 >= 0; */
-    double s1 = cbx_add_rn(q0, q1);
-    double s2 = cbx_add_rn(s1, q2);
-    /*@ assert s: s2 >= nrm3(b0, b1, b2) * (1 - 0x1p-51) - 0x1p-1071 && s2 >= 0; */
-    /*@ assert smax: s2 <= 0x1p1020; */
-    double e = cbx_mul_rn(s2, 0x1p-50);
-    double f = cbx_add_rn(s2, e);
-    double su = cbx_add_rn(f, 0x1p-1070);
-    /*@ assert su: su >= nrm3(b0, b1, b2) && su <= 0x1p1021; */
-    double r = cbx_sqrt_rn(su);
-    /*@ assert rb: sq_le(r, 0x1p511); */
-    /*@ assert rb2: r <= 0x1p511; */
-    double e2 = cbx_mul_rn(r, 0x1p-50);
-    double ru = cbx_add_rn(cbx_add_rn(r, e2), 0x1p-1070);
-    /*@ assert ru1: ru >= r * (1 + 0x1p-52); */
-    /*@ assert ru2: sq_le(r * (1 + 0x1p-52), ru); */
+    cbx_fp s1 = cbx_add_rn(q0, q1);
+    cbx_fp s2 = cbx_add_rn(s1, q2);
+    /*@ assert s: s2 >= nrm3(b0, b1, b2) * (1 - CBX_U4) - CBX_ETA8 && s2 >= 0; */
+    /*@ assert smax: s2 <= CBX_R20; */
+    cbx_fp e = cbx_mul_rn(s2, CBX_K(U8));
+    cbx_fp f = cbx_add_rn(s2, e);
+    cbx_fp su = cbx_add_rn(f, CBX_K(ETA16));
+    /*@ assert su: su >= nrm3(b0, b1, b2) && su <= CBX_R21; */
+    cbx_fp r = cbx_sqrt_rn(su);
+    /*@ assert rb: sq_le(r, CBX_SR1); */
+    /*@ assert rb2: r <= CBX_SR1; */
+    cbx_fp e2 = cbx_mul_rn(r, CBX_K(U8));
+    cbx_fp ru = cbx_add_rn(cbx_add_rn(r, e2), CBX_K(ETA16));
+    /*@ assert ru1: ru >= r * (1 + CBX_U2); */
+    /*@ assert ru2: sq_le(r * (1 + CBX_U2), ru); */
     /*@ assert ru3: ru * ru >= su; */
     return ru;
 }
@@ -60,53 +60,53 @@ static double ball_radius(double b0, double b1, double b2)
     requires rng: in_dom508(r, d);
     assigns \nothing;
     ensures fin: \is_finite(\result);
-    ensures up: \abs(r*d) <= \result <= 0x1p509;
+    ensures up: \abs(r*d) <= \result <= CBX_SB;
 */
-static double abs_prod_up(double r, double d)
+static cbx_fp abs_prod_up(cbx_fp r, cbx_fp d)
 {
-    double e = cbx_abs(cbx_mul_rn(r, d));
-    double f = cbx_add_rn(e, cbx_mul_rn(e, 0x1p-51));
-    return cbx_add_rn(f, 0x1p-1070);
+    cbx_fp e = cbx_abs(cbx_mul_rn(r, d));
+    cbx_fp f = cbx_add_rn(e, cbx_mul_rn(e, CBX_K(U4)));
+    return cbx_add_rn(f, CBX_K(ETA16));
 }
 
 /* An upper bound r of the norm of (b0, b1, b2), accurate for every row: a
  * row with all |b_j| < 2^-300 (whose squares may underflow) is first scaled
  * by 2^600, and its radius scaled back by 2^-600, both rounded up. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
-    requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
-                  && cls(b2, b2, 0x1p509, 0x1p509);
+    requires rng: cls(b0, b0, CBX_SB, CBX_SB) && cls(b1, b1, CBX_SB, CBX_SB)
+                  && cls(b2, b2, CBX_SB, CBX_SB);
     assigns \nothing;
-    ensures fin: \is_finite(\result) && 0 <= \result <= 0x1p512;
+    ensures fin: \is_finite(\result) && 0 <= \result <= CBX_SR2;
     ensures bound: sq_bound(b0, b1, b2, \result);
 */
-static double row_radius(double b0, double b1, double b2)
+static cbx_fp row_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
 {
-    if (!cbx_cls(b0, b1, 0x1p-300, 0x1p-300) || !cbx_cls(b2, b2, 0x1p-300, 0x1p-300))
+    if (!cbx_cls(b0, b1, CBX_K(STINY), CBX_K(STINY)) || !cbx_cls(b2, b2, CBX_K(STINY), CBX_K(STINY)))
         return ball_radius(b0, b1, b2);
-    double s0 = abs_prod_up(b0, 0x1p600);
-    double s1 = abs_prod_up(b1, 0x1p600);
-    double s2 = abs_prod_up(b2, 0x1p600);
-    double rs = ball_radius(s0, s1, s2);
-    /*@ assert sq0: sq_le(b0*0x1p600, s0) && sq_le(b1*0x1p600, s1) && sq_le(b2*0x1p600, s2); */
-    /*@ assert sbs: sq_bound(b0*0x1p600, b1*0x1p600, b2*0x1p600, rs); */
-    /*@ assert sb: sq_bound(b0, b1, b2, rs*0x1p-600); */
-    double r = abs_prod_up(rs, 0x1p-600);
-    /*@ assert rr: rs*0x1p-600 <= r; */
+    cbx_fp s0 = abs_prod_up(b0, CBX_K(SUP));
+    cbx_fp s1 = abs_prod_up(b1, CBX_K(SUP));
+    cbx_fp s2 = abs_prod_up(b2, CBX_K(SUP));
+    cbx_fp rs = ball_radius(s0, s1, s2);
+    /*@ assert sq0: sq_le(b0*CBX_SUP, s0) && sq_le(b1*CBX_SUP, s1) && sq_le(b2*CBX_SUP, s2); */
+    /*@ assert sbs: sq_bound(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP, rs); */
+    /*@ assert sb: sq_bound(b0, b1, b2, rs*CBX_SDN); */
+    cbx_fp r = abs_prod_up(rs, CBX_K(SDN));
+    /*@ assert rr: rs*CBX_SDN <= r; */
     return r;
 }
 
 /* Bounds [lo, hi] of t + b . p over the unit ball. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(t);
-    requires rng: cls(b0, b0, 0x1p509, 0x1p509) && cls(b1, b1, 0x1p509, 0x1p509)
-                  && cls(b2, b2, 0x1p509, 0x1p509);
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
+    requires rng: cls(b0, b0, CBX_SB, CBX_SB) && cls(b1, b1, CBX_SB, CBX_SB)
+                  && cls(b2, b2, CBX_SB, CBX_SB);
+    requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \nothing;
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
     ensures ball: ball_cover(\result.a, \result.b, b0, b1, b2, t);
 */
-static conv_res ball_axis_bounds(double b0, double b1, double b2, double t)
+static conv_res ball_axis_bounds(cbx_fp b0, cbx_fp b1, cbx_fp b2, cbx_fp t)
 {
-    double r = row_radius(b0, b1, b2);
+    cbx_fp r = row_radius(b0, b1, b2);
     conv_res lh = cbx_c2b(t, r);
     /*@ assert lh: lh.a <= t - r && t + r <= lh.b; */
     return lh;
@@ -116,13 +116,13 @@ static conv_res ball_axis_bounds(double b0, double b1, double b2, double t)
     ensures \result != 0 <==> (\is_finite(m0) && \is_finite(m1) && \is_finite(m2)
                                && \is_finite(t) && sph_dom(m0, m1, m2, t));
 */
-static int sph_ok(double m0, double m1, double m2, double t)
+static int sph_ok(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
 {
     if (!cbx_is_fin(m0) || !cbx_is_fin(m1) || !cbx_is_fin(m2) || !cbx_is_fin(t)) return 0;
-    if (!cbx_cls(m0, m0, 0x1p509, 0x1p509)) return 0;
-    if (!cbx_cls(m1, m1, 0x1p509, 0x1p509)) return 0;
-    if (!cbx_cls(m2, m2, 0x1p509, 0x1p509)) return 0;
-    return t >= -0x1p1018 && t <= 0x1p1018;
+    if (!cbx_cls(m0, m0, CBX_K(SB), CBX_K(SB))) return 0;
+    if (!cbx_cls(m1, m1, CBX_K(SB), CBX_K(SB))) return 0;
+    if (!cbx_cls(m2, m2, CBX_K(SB), CBX_K(SB))) return 0;
+    return t >= -CBX_K(RT) && t <= CBX_K(RT);
 }
 
 /*@ requires \valid(out) && 0 <= i <= 2;
@@ -143,7 +143,7 @@ static void sph_whole(cbx_box *out, int i)
 */
 static int sphere_axis(const cbx_affine *a, cbx_box *out, int i)
 {
-    double m0 = a->m[i][0], m1 = a->m[i][1], m2 = a->m[i][2], t = a->m[i][3];
+    cbx_fp m0 = a->m[i][0], m1 = a->m[i][1], m2 = a->m[i][2], t = a->m[i][3];
     if (!sph_ok(m0, m1, m2, t)) {
         sph_whole(out, i);
         return 0;
@@ -191,13 +191,13 @@ cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
     ensures ball: ball_cover(\result.a, \result.b, r0*d0, r1*d1, r2*d2, c);
 */
-static conv_res ell_axis_bounds(double r0, double r1, double r2,
-                                double d0, double d1, double d2, double c)
+static conv_res ell_axis_bounds(cbx_fp r0, cbx_fp r1, cbx_fp r2,
+                                cbx_fp d0, cbx_fp d1, cbx_fp d2, cbx_fp c)
 {
-    double b0 = abs_prod_up(r0, d0);
-    double b1 = abs_prod_up(r1, d1);
-    double b2 = abs_prod_up(r2, d2);
-    double r = row_radius(b0, b1, b2);
+    cbx_fp b0 = abs_prod_up(r0, d0);
+    cbx_fp b1 = abs_prod_up(r1, d1);
+    cbx_fp b2 = abs_prod_up(r2, d2);
+    cbx_fp r = row_radius(b0, b1, b2);
     /*@ assert sq0: sq_le(r0*d0, b0) && sq_le(r1*d1, b1) && sq_le(r2*d2, b2); */
     /*@ assert sb: sq_bound(r0*d0, r1*d1, r2*d2, r); */
     conv_res lh = cbx_c2b(c, r);
@@ -210,14 +210,14 @@ static conv_res ell_axis_bounds(double r0, double r1, double r2,
       && \is_finite(d0) && \is_finite(d1) && \is_finite(d2) && \is_finite(c)
       && ell_dom(r0, r1, r2, d0, d1, d2, c));
 */
-static int ell_ok(double r0, double r1, double r2, double d0, double d1, double d2, double c)
+static int ell_ok(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_fp d2, cbx_fp c)
 {
     if (!cbx_is_fin(r0) || !cbx_is_fin(r1) || !cbx_is_fin(r2)) return 0;
     if (!cbx_is_fin(d0) || !cbx_is_fin(d1) || !cbx_is_fin(d2) || !cbx_is_fin(c)) return 0;
-    if (!cbx_cls(r0, d0, 0x1p254, 0x1p254)) return 0;
-    if (!cbx_cls(r1, d1, 0x1p254, 0x1p254)) return 0;
-    if (!cbx_cls(r2, d2, 0x1p254, 0x1p254)) return 0;
-    return c >= -0x1p1018 && c <= 0x1p1018;
+    if (!cbx_cls(r0, d0, CBX_K(EB), CBX_K(EB))) return 0;
+    if (!cbx_cls(r1, d1, CBX_K(EB), CBX_K(EB))) return 0;
+    if (!cbx_cls(r2, d2, CBX_K(EB), CBX_K(EB))) return 0;
+    return c >= -CBX_K(RT) && c <= CBX_K(RT);
 }
 
 /*@ requires \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
@@ -225,7 +225,7 @@ static int ell_ok(double r0, double r1, double r2, double d0, double d1, double 
     assigns \nothing;
     ensures \result != 0 <==> ell_nan(center, radii, rot);
 */
-static int ell_any_nan(const double *center, const double *radii, const double (*rot)[3])
+static int ell_any_nan(const cbx_fp *center, const cbx_fp *radii, const cbx_fp (*rot)[3])
 {
     if (cbx_is_nan(center[0]) || cbx_is_nan(center[1]) || cbx_is_nan(center[2])) return 1;
     if (cbx_is_nan(radii[0]) || cbx_is_nan(radii[1]) || cbx_is_nan(radii[2])) return 1;
@@ -234,7 +234,7 @@ static int ell_any_nan(const double *center, const double *radii, const double (
     return cbx_is_nan(rot[2][0]) || cbx_is_nan(rot[2][1]) || cbx_is_nan(rot[2][2]);
 }
 
-typedef struct ell_res { double lo, hi; int ok; } ell_res;
+typedef struct ell_res { cbx_fp lo, hi; int ok; } ell_res;
 
 /* One axis of the ellipsoid: the kernel inside the domain, [-inf, +inf]
  * outside it. */
@@ -247,8 +247,8 @@ typedef struct ell_res { double lo, hi; int ok; } ell_res;
     ensures out: \result.ok == 0 ==>
       \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
 */
-static ell_res ellipsoid_axis(double r0, double r1, double r2,
-                              double d0, double d1, double d2, double c)
+static ell_res ellipsoid_axis(cbx_fp r0, cbx_fp r1, cbx_fp r2,
+                              cbx_fp d0, cbx_fp d1, cbx_fp d2, cbx_fp c)
 {
     ell_res e;
     e.ok = ell_ok(r0, r1, r2, d0, d1, d2, c);
@@ -264,8 +264,8 @@ static ell_res ellipsoid_axis(double r0, double r1, double r2,
 }
 
 /* contract: src/certbox.h */
-cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
-                             const double rot[3][3], cbx_box *out)
+cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
+                             const cbx_fp rot[3][3], cbx_box *out)
 {
     if (ell_any_nan(center, radii, rot)) {
         sph_whole(out, 0);
@@ -273,11 +273,11 @@ cbx_status cbx_ellipsoid_box(const double center[3], const double radii[3],
         sph_whole(out, 2);
         return CBX_EINVAL;
     }
-    double d0 = radii[0], d1 = radii[1], d2 = radii[2];
-    double c0 = center[0], c1 = center[1], c2 = center[2];
-    double r00 = rot[0][0], r01 = rot[0][1], r02 = rot[0][2];
-    double r10 = rot[1][0], r11 = rot[1][1], r12 = rot[1][2];
-    double r20 = rot[2][0], r21 = rot[2][1], r22 = rot[2][2];
+    cbx_fp d0 = radii[0], d1 = radii[1], d2 = radii[2];
+    cbx_fp c0 = center[0], c1 = center[1], c2 = center[2];
+    cbx_fp r00 = rot[0][0], r01 = rot[0][1], r02 = rot[0][2];
+    cbx_fp r10 = rot[1][0], r11 = rot[1][1], r12 = rot[1][2];
+    cbx_fp r20 = rot[2][0], r21 = rot[2][1], r22 = rot[2][2];
     ell_res e0 = ellipsoid_axis(r00, r01, r02, d0, d1, d2, c0);
     ell_res e1 = ellipsoid_axis(r10, r11, r12, d0, d1, d2, c1);
     ell_res e2 = ellipsoid_axis(r20, r21, r22, d0, d1, d2, c2);

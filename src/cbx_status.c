@@ -1,5 +1,6 @@
 /* Status names, for messages and logs. */
 #include "certbox.h"
+#include "cbx_build.h"
 
 /*@ assigns \nothing;
     ensures \valid_read(\result); */

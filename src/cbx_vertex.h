@@ -8,9 +8,10 @@
 #define CBX_VERTEX_H
 
 #include "certbox.h"
+#include "cbx_prec.h"
 #include "cbx_domain.h"
 
-typedef struct end_result { double v; int ok; } end_result;
+typedef struct end_result { cbx_fp v; int ok; } end_result;
 
 /* Lemma functions (empty bodies, no code): their contracts state the sign
  * step of one column, m*v <= m*p or >= for every point p of [l, h], in the
@@ -21,25 +22,25 @@ typedef struct end_result { double v; int ok; } end_result;
     assigns \nothing;
     ensures \forall real p; ext_in(p, l, h) ==> nn_prod(m, p - l);
 */
-static inline void pos_below(double m, double l, double h) { (void)m; (void)l; (void)h; }
+static inline void pos_below(cbx_fp m, cbx_fp l, cbx_fp h) { (void)m; (void)l; (void)h; }
 
 /*@ requires \is_finite(m) && \is_finite(h) && m < 0;
     assigns \nothing;
     ensures \forall real p; ext_in(p, l, h) ==> nn_prod(-m, h - p);
 */
-static inline void neg_below(double m, double l, double h) { (void)m; (void)l; (void)h; }
+static inline void neg_below(cbx_fp m, cbx_fp l, cbx_fp h) { (void)m; (void)l; (void)h; }
 
 /*@ requires \is_finite(m) && \is_finite(h) && m > 0;
     assigns \nothing;
     ensures \forall real p; ext_in(p, l, h) ==> nn_prod(m, h - p);
 */
-static inline void pos_above(double m, double l, double h) { (void)m; (void)l; (void)h; }
+static inline void pos_above(cbx_fp m, cbx_fp l, cbx_fp h) { (void)m; (void)l; (void)h; }
 
 /*@ requires \is_finite(m) && \is_finite(l) && m < 0;
     assigns \nothing;
     ensures \forall real p; ext_in(p, l, h) ==> nn_prod(-m, p - l);
 */
-static inline void neg_above(double m, double l, double h) { (void)m; (void)l; (void)h; }
+static inline void neg_above(cbx_fp m, cbx_fp l, cbx_fp h) { (void)m; (void)l; (void)h; }
 
 /* The vertex of [l, h] where m*x is least; ok == 0: m*x unbounded below. */
 /*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
@@ -49,16 +50,16 @@ static inline void neg_above(double m, double l, double h) { (void)m; (void)l; (
     ensures sel: \result.ok != 0 ==> sel_lo(m, \result.v, l, h);
     ensures col: \result.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m * \result.v <= m * p;
 */
-static inline end_result vertex_lo(double m, double l, double h)
+static inline end_result vertex_lo(cbx_fp m, cbx_fp l, cbx_fp h)
 {
     end_result r;
-    if (m > 0.0) {
+    if (m > CBX_C(0.0)) {
         /*@ assert sg: m > 0; */
         r.v = l;
         r.ok = cbx_is_fin(l);
         if (r.ok) pos_below(m, l, h);
         /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l <= m*p; */
-    } else if (m < 0.0) {
+    } else if (m < CBX_C(0.0)) {
         /*@ assert sg: m < 0; */
         r.v = h;
         r.ok = cbx_is_fin(h);
@@ -67,7 +68,7 @@ static inline end_result vertex_lo(double m, double l, double h)
     } else {
         /*@ assert sg: m == 0; */
         /*@ assert z: \forall real p; m*0 == m*p; */
-        r.v = 0.0;
+        r.v = CBX_C(0.0);
         r.ok = 1;
     }
     return r;
@@ -81,16 +82,16 @@ static inline end_result vertex_lo(double m, double l, double h)
     ensures sel: \result.ok != 0 ==> sel_hi(m, \result.v, l, h);
     ensures col: \result.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m * \result.v >= m * p;
 */
-static inline end_result vertex_hi(double m, double l, double h)
+static inline end_result vertex_hi(cbx_fp m, cbx_fp l, cbx_fp h)
 {
     end_result r;
-    if (m > 0.0) {
+    if (m > CBX_C(0.0)) {
         /*@ assert sg: m > 0; */
         r.v = h;
         r.ok = cbx_is_fin(h);
         if (r.ok) pos_above(m, l, h);
         /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h >= m*p; */
-    } else if (m < 0.0) {
+    } else if (m < CBX_C(0.0)) {
         /*@ assert sg: m < 0; */
         r.v = l;
         r.ok = cbx_is_fin(l);
@@ -99,7 +100,7 @@ static inline end_result vertex_hi(double m, double l, double h)
     } else {
         /*@ assert sg: m == 0; */
         /*@ assert z: \forall real p; m*0 == m*p; */
-        r.v = 0.0;
+        r.v = CBX_C(0.0);
         r.ok = 1;
     }
     return r;

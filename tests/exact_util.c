@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <float.h>
 
 /* Same order as dom_pair in specs/cbx_spec.h; 509 is in the spec's list
  * even though the comment in certbox.h only names 0, 64, ..., 960, 1018. */
@@ -11,6 +12,42 @@ const int xu_class_k[XU_NCLASS] = {
     509, 0, 64, 128, 192, 256, 320, 384, 448, 512,
     576, 640, 704, 768, 832, 896, 960, 1018
 };
+
+/* The two formats (src/cbx_prec_begin.h has the library's side). */
+const xu_format xu_binary64 = {
+    "binary64", 53, 1074, 1018, 1065, 1000, 1023, -1022, 200, 900,
+    { 509, 0, 64, 128, 192, 256, 320, 384, 448, 512,
+      576, 640, 704, 768, 832, 896, 960, 1018 }
+};
+const xu_format xu_binary32 = {
+    "binary32", 24, 149, 122, 140, 75, 127, -126, 24, 100,
+    { 61, 0, 8, 16, 24, 32, 40, 48, 56, 64,
+      72, 80, 88, 96, 104, 112, 120, 122 }
+};
+const xu_format *xu_fmt = &xu_binary64;
+void xu_set_format(const xu_format *f) { xu_fmt = f; }
+
+/* The next value of the format above x (x a value of the format). */
+double xu_next_up(double x)
+{
+    if (xu_fmt->p == 24) return (double)nextafterf((float)x, HUGE_VALF);
+    return nextafter(x, HUGE_VAL);
+}
+
+/* d rounded to the format (to nearest).  Through a volatile float: GCC
+ * 12.2 at -O2 drops the rounding of (double)(float)(a * b) in loops its
+ * SLP vectorizer packs (observed here; tests/test_ieee.c keeps the
+ * reproducer), which would hand the library values that are not floats. */
+double xu_round_fmt(double d)
+{
+    volatile float f;
+    if (xu_fmt->p != 24) return d;
+    f = (float)d;
+    return f;
+}
+
+/* The largest finite value of the format. */
+double xu_fmt_max(void) { return xu_fmt->p == 24 ? (double)FLT_MAX : DBL_MAX; }
 
 const char *const xu_flag_name[XU_NFLAGS] = {
     "status", "out-set", "special-out", "oob-axes", "finite",
@@ -62,8 +99,8 @@ int xu_pair_in_domain(double m, double c)
     int n;
     double am = fabs(m), ac = fabs(c);
     for (n = 0; n < XU_NCLASS; n++) {
-        int k = xu_class_k[n];
-        if (am <= ldexp(1.0, k) && ac <= ldexp(1.0, 1018 - k)) return 1;
+        int k = xu_fmt->class_k[n];
+        if (am <= ldexp(1.0, k) && ac <= ldexp(1.0, xu_fmt->rt - k)) return 1;
     }
     return 0;
 }
@@ -75,7 +112,7 @@ int xu_row_in_domain(const cbx_affine *a, const cbx_box *in, int i)
         if (!xu_pair_in_domain(a->m[i][j], in->lo[j])) return 0;
         if (!xu_pair_in_domain(a->m[i][j], in->hi[j])) return 0;
     }
-    return fabs(a->m[i][3]) <= ldexp(1.0, 1018);
+    return fabs(a->m[i][3]) <= ldexp(1.0, xu_fmt->rt);
 }
 
 int xu_oob_mask(const cbx_affine *a, const cbx_box *in)
@@ -122,7 +159,7 @@ int xu_end_kind(const cbx_affine *a, const cbx_box *in, int i, int upper)
     if (!xu_vertex(a, in, i, upper, v)) return XU_END_UNB;
     for (j = 0; j < 3; j++)
         if (!xu_pair_in_domain(a->m[i][j], v[j])) return XU_END_LOST;
-    if (!(fabs(a->m[i][3]) <= ldexp(1.0, 1018))) return XU_END_LOST;
+    if (!(fabs(a->m[i][3]) <= ldexp(1.0, xu_fmt->rt))) return XU_END_LOST;
     return XU_END_VERTEX;
 }
 
@@ -281,8 +318,9 @@ void xu_scaled_to_q(mpq_t q, const mpz_t v)
     mpq_div_2exp(q, q, XU_SHIFT);
 }
 
-/* n * 2^53 / den as a double (den > 0); relative error a few ulps, which
- * is plenty for statistics.  The exact decisions are made on mpz. */
+/* n * 2^p / den as a double (den > 0, u = 2^-p); relative error a few
+ * ulps, which is plenty for statistics.  The exact decisions are made on
+ * mpz. */
 static double xu_ratio53(const mpz_t n, const mpz_t den)
 {
     long en, ed;
@@ -290,14 +328,15 @@ static double xu_ratio53(const mpz_t n, const mpz_t den)
     if (mpz_sgn(n) == 0) return 0.0;
     fn = mpz_get_d_2exp(&en, n);
     fd = mpz_get_d_2exp(&ed, den);
-    return ldexp(fn / fd, (int)(en - ed + 53));
+    return ldexp(fn / fd, (int)(en - ed + xu_fmt->p));
 }
 
-/* x->e = S + 2^1127, i.e. (u S + eta) * 2^(XU_SHIFT + 53). */
+/* x->e = (u S + eta) * 2^(XU_SHIFT + p) = S + 2^(XU_SHIFT - emin + p)
+ * (binary64: S + 2^1127). */
 static void xu_unit_den(xu_exact *x)
 {
     mpz_set_ui(x->e, 1);
-    mpz_mul_2exp(x->e, x->e, XU_SHIFT - 1074 + 53);
+    mpz_mul_2exp(x->e, x->e, XU_SHIFT - xu_fmt->emin + xu_fmt->p);
     mpz_add(x->e, x->e, x->S);
 }
 
@@ -329,13 +368,14 @@ double xu_excess_hi(xu_exact *x, double hi)
     return xu_ratio53(x->d, x->e);
 }
 
-/* gap * 2^53 <= 12 S + 2^(XU_SHIFT - 1065 + 53), all scaled by
- * 2^(XU_SHIFT + 53): exactly the spec's 0x1.8p-50 * S + 0x1p-1065. */
+/* gap * 2^p <= 12 S + 2^(XU_SHIFT - tight_e + p), all scaled by
+ * 2^(XU_SHIFT + p): exactly the spec's 12 u S + 2^-tight_e (binary64:
+ * 0x1.8p-50 * S + 0x1p-1065). */
 static int xu_gap_within_proven(xu_exact *x)
 {
-    mpz_mul_2exp(x->t, x->d, 53);
+    mpz_mul_2exp(x->t, x->d, (mp_bitcnt_t)xu_fmt->p);
     mpz_set_ui(x->e, 1);
-    mpz_mul_2exp(x->e, x->e, XU_SHIFT - 1065 + 53);
+    mpz_mul_2exp(x->e, x->e, XU_SHIFT - xu_fmt->tight_e + xu_fmt->p);
     mpz_addmul_ui(x->e, x->S, 12);
     return mpz_cmp(x->t, x->e) <= 0;
 }
@@ -454,7 +494,7 @@ static void xu_check_axis(xu_exact *x, xu_verdict *v, const cbx_affine *a,
     glo = mpz_sgn(x->d);
     v->ax[i].ex_lo = xu_ratio53(x->d, x->e);
     if (!xu_gap_within_proven(x)) {
-        snprintf(why, sizeof why, "axis %d: lo beyond 12uS+2^-1065 (excess %.3g)", i,
+        snprintf(why, sizeof why, "axis %d: lo beyond 12uS+2^-%d (excess %.3g)", i, xu_fmt->tight_e,
                 v->ax[i].ex_lo);
         xu_fail(v, XU_F_PROVEN, why);
     }
@@ -463,7 +503,7 @@ static void xu_check_axis(xu_exact *x, xu_verdict *v, const cbx_affine *a,
     ghi = mpz_sgn(x->d);
     v->ax[i].ex_hi = xu_ratio53(x->d, x->e);
     if (!xu_gap_within_proven(x)) {
-        snprintf(why, sizeof why, "axis %d: hi beyond 12uS+2^-1065 (excess %.3g)", i,
+        snprintf(why, sizeof why, "axis %d: hi beyond 12uS+2^-%d (excess %.3g)", i, xu_fmt->tight_e,
                 v->ax[i].ex_hi);
         xu_fail(v, XU_F_PROVEN, why);
     }
@@ -474,8 +514,8 @@ static void xu_check_axis(xu_exact *x, xu_verdict *v, const cbx_affine *a,
     }
     v->ax[i].checked = 1;
     v->ax[i].exact = glo == 0 && ghi == 0;
-    /* u S < 2^XU_TINY eta  <=>  S 2^XU_SHIFT < 2^(XU_SHIFT - 1074 + 53 + XU_TINY) */
-    v->ax[i].tiny = mpz_sizeinbase(x->S, 2) <= XU_SHIFT - 1074 + 53 + XU_TINY;
+    /* u S < 2^XU_TINY eta  <=>  S 2^XU_SHIFT < 2^(XU_SHIFT - emin + p + XU_TINY) */
+    v->ax[i].tiny = mpz_sizeinbase(x->S, 2) <= (size_t)(XU_SHIFT - xu_fmt->emin + xu_fmt->p + XU_TINY);
 
     if (corners) {
         v->applied[XU_F_CROSS]++;
@@ -577,15 +617,15 @@ static void xu_check_end(xu_exact *x, xu_verdict *v, const cbx_affine *a,
         g = mpz_sgn(x->d);
         v->ax[i].ex_end[upper] = xu_ratio53(x->d, x->e);
         v->ax[i].end_checked[upper] = 1;
-        v->ax[i].end_tiny[upper] = mpz_sizeinbase(x->S, 2) <= XU_SHIFT - 1074 + 53 + XU_TINY;
+        v->ax[i].end_tiny[upper] = mpz_sizeinbase(x->S, 2) <= (size_t)(XU_SHIFT - xu_fmt->emin + xu_fmt->p + XU_TINY);
         if (g < 0) {
             snprintf(why, sizeof why, "axis %d: %s end %s the exact vertex value (excess %.3g)",
                      i, nm, upper ? "below" : "above", v->ax[i].ex_end[upper]);
             xu_fail(v, XU_F_ENDCONT, why);
         }
         if (!xu_gap_within_proven(x)) {
-            snprintf(why, sizeof why, "axis %d: %s end beyond 12uS_v+2^-1065 (excess %.3g)", i,
-                     nm, v->ax[i].ex_end[upper]);
+            snprintf(why, sizeof why, "axis %d: %s end beyond 12uS_v+2^-%d (excess %.3g)", i,
+                     nm, xu_fmt->tight_e, v->ax[i].ex_end[upper]);
             xu_fail(v, XU_F_ENDPROVEN, why);
         }
     }
@@ -803,15 +843,15 @@ void xu_stats_print(FILE *f, const char *title, const xu_stats *s)
             s->ends_kind[XU_END_WHOLE]);
     if (s->vends + s->vends_tiny)
         fprintf(f, "  vertex ends (rule B, finite) checked: %ld; excess (units of u*S_v + "
-                   "2^-1074): max %.4f mean %.4f over %ld ends with u*S_v >= 2^%d*eta, "
-                   "max %.4f over %ld below\n", s->vends + s->vends_tiny, s->max_vend,
+                   "2^-%d): max %.4f mean %.4f over %ld ends with u*S_v >= 2^%d*eta, "
+                   "max %.4f over %ld below\n", s->vends + s->vends_tiny, xu_fmt->emin, s->max_vend,
                 s->vends ? s->sum_vend / (double)s->vends : 0.0, s->vends, XU_TINY,
                 s->max_vend_tiny, s->vends_tiny);
     fprintf(f, "  in-domain (full-row) axes checked: %ld (exactly equal to the exact "
                "image: %ld)\n", s->axes, s->axes_exact);
     if (s->axes == 0) return;
-    fprintf(f, "  excess lo: max %.4f  mean %.4f   (units of u*S + 2^-1074)\n",
-            s->max_lo, s->sum_lo / n);
+    fprintf(f, "  excess lo: max %.4f  mean %.4f   (units of u*S + 2^-%d, u = 2^-%d)\n",
+            s->max_lo, s->sum_lo / n, xu_fmt->emin, xu_fmt->p);
     fprintf(f, "  excess hi: max %.4f  mean %.4f\n", s->max_hi, s->sum_hi / n);
     fprintf(f, "  excess   : max %.4f  mean %.4f   target <= 8: %s (%ld sides "
                "above 8)\n", mx, (s->sum_lo + s->sum_hi) / (2 * n),
@@ -825,9 +865,9 @@ void xu_stats_print(FILE *f, const char *title, const xu_stats *s)
         fprintf(f, "  excess, axes with u*S <  2^%d*eta: max %.4f  mean %.4f  "
                    "(%ld axes)\n", XU_TINY, s->max_tiny,
                 s->sum_tiny / (2.0 * (double)s->axes_tiny), s->axes_tiny);
-    fprintf(f, "  (the proven bound 12 u S + 2^-1065 is checked exactly as "
-               "proven-tight; 2^-1065 = 512 eta, so where u*S is tiny an "
-               "excess above 12 is allowed)\n");
+    fprintf(f, "  (the proven bound 12 u S + 2^-%d is checked exactly as "
+               "proven-tight; 2^-%d = 512 eta, so where u*S is tiny an "
+               "excess above 12 is allowed)\n", xu_fmt->tight_e, xu_fmt->tight_e);
     fprintf(f, "  histogram (both sides):");
     for (k = 0; k < XU_NBINS; k++) {
         if (k == 0) fprintf(f, " <0:%ld", s->hist[k]);
@@ -883,27 +923,29 @@ void xu_scaled_mul(xu_exact *x, mpz_t z, double m, double c)
 
 double xu_units(xu_exact *x, const mpz_t gap, const mpz_t S)
 {
-    /* x->e = (u S + eta) 2^(XU_SHIFT + 53) = S + 2^(XU_SHIFT - 1074 + 53),
+    /* x->e = (u S + eta) 2^(XU_SHIFT + p) = S + 2^(XU_SHIFT - emin + p),
      * as in xu_unit_den but without touching x->S */
     mpz_set_ui(x->e, 1);
-    mpz_mul_2exp(x->e, x->e, XU_SHIFT - 1074 + 53);
+    mpz_mul_2exp(x->e, x->e, XU_SHIFT - xu_fmt->emin + xu_fmt->p);
     mpz_add(x->e, x->e, S);
     return xu_ratio53(gap, x->e);
 }
 
-/* u S < 2^-1000  <=>  S 2^XU_SHIFT < 2^(XU_SHIFT - 947) */
+/* u S < 2^-cap  <=>  S 2^XU_SHIFT < 2^(XU_SHIFT + p - cap)
+ * (binary64: u S < 2^-1000, S 2^XU_SHIFT < 2^(XU_SHIFT - 947)) */
 int xu_scale_tiny(const mpz_t S)
 {
-    return mpz_sgn(S) == 0 || mpz_sizeinbase(S, 2) <= XU_SHIFT - 947;
+    return mpz_sgn(S) == 0
+           || mpz_sizeinbase(S, 2) <= (size_t)(XU_SHIFT + xu_fmt->p - xu_fmt->tiny_cap);
 }
 
-/* gap 2^XU_SHIFT > 2^(XU_SHIFT - 1000) */
+/* gap 2^XU_SHIFT > 2^(XU_SHIFT - cap) */
 int xu_gap_above_tiny_cap(const mpz_t gap)
 {
+    size_t c = (size_t)(XU_SHIFT - xu_fmt->tiny_cap);
     return mpz_sgn(gap) > 0
-           && (mpz_sizeinbase(gap, 2) > XU_SHIFT - 1000 + 1
-               || (mpz_sizeinbase(gap, 2) == XU_SHIFT - 1000 + 1
-                   && mpz_scan1(gap, 0) < XU_SHIFT - 1000));
+           && (mpz_sizeinbase(gap, 2) > c + 1
+               || (mpz_sizeinbase(gap, 2) == c + 1 && mpz_scan1(gap, 0) < c));
 }
 
 int xu_cbox_has_nan(const cbx_affine *a, const cbx_cbox *in)
@@ -930,7 +972,7 @@ int xu_cbox_row_in_domain(const cbx_affine *a, const cbx_cbox *in, int i)
         if (!xu_pair_in_domain(a->m[i][j], in->c[j])) return 0;
         if (!xu_pair_in_domain(a->m[i][j], in->h[j])) return 0;
     }
-    return fabs(a->m[i][3]) <= ldexp(1.0, 1018);
+    return fabs(a->m[i][3]) <= ldexp(1.0, xu_fmt->rt);
 }
 
 const char xu_cax_char[XU_NCAX + 1] = "ADW";
@@ -1016,10 +1058,12 @@ uint64_t xu_rng_next(xu_rng *r)
     return z ^ (z >> 31);
 }
 
+/* 64-bit arithmetic throughout: long is 32 bits on 32-bit targets, where
+ * hi - lo + 1 overflows for spans above 2^31 (found by make check-cross) */
 int xu_rng_int(xu_rng *r, int lo, int hi)
 {
-    uint64_t span = (uint64_t)((long)hi - (long)lo + 1);
-    return (int)((long)lo + (long)(xu_rng_next(r) % span));
+    uint64_t span = (uint64_t)((int64_t)hi - (int64_t)lo + 1);
+    return (int)((int64_t)lo + (int64_t)(xu_rng_next(r) % span));
 }
 
 double xu_rng_sign(xu_rng *r) { return (xu_rng_next(r) >> 63) ? -1.0 : 1.0; }
@@ -1032,22 +1076,30 @@ double xu_rng_unit(xu_rng *r)
 double xu_gen_mag(xu_rng *r, int emin, int emax)
 {
     int p = xu_rng_int(r, 0, 99), e;
+    int mb = xu_fmt->p - 1; /* mantissa bits after the leading one */
     double frac;
-    if (emin < -1074) emin = -1074;
-    if (emax > 1023) emax = 1023;
+    if (emin < -xu_fmt->emin) emin = -xu_fmt->emin;
+    if (emax > xu_fmt->emax) emax = xu_fmt->emax;
     if (emax < emin) emax = emin;
     if (p < 4) return 0.0;
     if (p < 8) return ldexp(1.0, emax);
-    if (p < 12 && emin <= -1022 && emax >= -1022)
-        return ldexp((double)((xu_rng_next(r) >> 12) | 1u), -1074);
+    if (p < 12 && emin <= xu_fmt->norm_min && emax >= xu_fmt->norm_min)
+        return ldexp((double)((xu_rng_next(r) >> (64 - mb)) | 1u), -xu_fmt->emin);
     e = xu_rng_int(r, emin - 1, emax - 1);
-    frac = 1.0 + ldexp((double)(xu_rng_next(r) >> 12), -52);
-    return ldexp(frac, e);
+    frac = 1.0 + ldexp((double)(xu_rng_next(r) >> (64 - mb)), -mb);
+    /* < 2^emax; a subnormal result rounds in double, so round it to the
+     * format (a no-op in binary64) */
+    frac = ldexp(frac, e);
+    return xu_round_fmt(frac);
 }
 
+/* Every draw of the generators below is its own statement: C leaves the
+ * order of the operands of * and of function arguments unspecified, and
+ * gcc orders them differently on x86-64 and ARM (found by check-cross). */
 double xu_gen_signed(xu_rng *r, int emin, int emax)
 {
-    return xu_rng_sign(r) * xu_gen_mag(r, emin, emax);
+    double s = xu_rng_sign(r);
+    return s * xu_gen_mag(r, emin, emax);
 }
 
 unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long dflt,
@@ -1085,4 +1137,209 @@ void xu_rand_rotation(xu_rng *r, double R[3][3])
     R[2][0] = 2 * (x * z - w * y);
     R[2][1] = 2 * (y * z + w * x);
     R[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+/* ---------------------------------------------------------------------- */
+/* Random cases of cbx_transform_box (test_exact) and of the float family  */
+/* (test_float): the format's values, drawn the same way                   */
+/* ---------------------------------------------------------------------- */
+
+/* Interval on axis j with |lo|, |hi| <= 2^chi. */
+static void xu_gen_interval(xu_rng *r, cbx_box *b, int j, int clo, int chi)
+{
+    int p = xu_rng_int(r, 0, 99);
+    double u, v;
+    if (p < 10) { /* point box */
+        b->lo[j] = b->hi[j] = xu_gen_signed(r, clo, chi);
+    } else if (p < 15) { /* signed zeros, any order: never empty */
+        b->lo[j] = xu_rng_sign(r) * 0.0;
+        b->hi[j] = xu_rng_sign(r) * 0.0;
+    } else if (p < 25) { /* symmetric */
+        u = xu_gen_mag(r, clo, chi);
+        b->lo[j] = -u;
+        b->hi[j] = u;
+    } else if (p < 32) { /* one ulp wide */
+        u = xu_gen_signed(r, clo, chi);
+        v = xu_next_up(u);
+        if (fabs(v) > ldexp(1.0, chi)) v = u;
+        b->lo[j] = u;
+        b->hi[j] = v;
+    } else {
+        u = xu_gen_signed(r, clo, chi);
+        v = xu_gen_signed(r, clo, chi);
+        b->lo[j] = u < v ? u : v;
+        b->hi[j] = u < v ? v : u;
+    }
+}
+
+/* t = -fl(sum_j m_j c_j) at a random corner: the image nearly cancels. */
+static double xu_cancelling_t(xu_rng *r, const cbx_affine *a, const cbx_box *b, int i)
+{
+    double s = 0.0;
+    int j;
+    for (j = 0; j < 3; j++)
+        s += a->m[i][j] * ((xu_rng_next(r) >> 63) ? b->hi[j] : b->lo[j]);
+    return -xu_round_fmt(s); /* a value of the format */
+}
+
+/* A case inside the domain by construction: per column a magnitude class
+ * k, entries within 2^k and coordinates within 2^(rt-k) (binary64:
+ * 2^(1018-k)).  In "narrow"
+ * mode all products share an exponent P (so terms are comparable and
+ * cancellation happens); otherwise exponents are spread over the class. */
+static void xu_gen_in_domain(xu_rng *r, cbx_affine *a, cbx_box *b)
+{
+    int narrow = xu_rng_int(r, 0, 1);
+    int E = xu_fmt->emin, RT = xu_fmt->rt;
+    int P = xu_rng_int(r, -E + 4, RT - 2);
+    int i, j;
+    for (j = 0; j < 3; j++) {
+        int k = xu_fmt->class_k[xu_rng_int(r, 0, XU_NCLASS - 1)];
+        int mlo = -E, mhi = k, clo = -E, chi = RT - k;
+        if (narrow) {
+            int lo = P - RT + k > -E ? P - RT + k : -E;
+            int hi = k < P + E ? k : P + E;
+            int am = xu_rng_int(r, lo, hi);
+            mhi = am;
+            mlo = am - 4;
+            chi = P - am;
+            clo = chi - 4;
+        }
+        for (i = 0; i < 3; i++) a->m[i][j] = xu_gen_signed(r, mlo, mhi);
+        xu_gen_interval(r, b, j, clo, chi);
+    }
+    for (i = 0; i < 3; i++) {
+        int p = xu_rng_int(r, 0, 9);
+        if (p < 2) a->m[i][3] = xu_cancelling_t(r, a, b, i);
+        else if (p < 3) a->m[i][3] = xu_rng_sign(r) * 0.0;
+        else if (narrow) a->m[i][3] = xu_gen_signed(r, P - 4, P);
+        else a->m[i][3] = xu_gen_signed(r, -E, RT);
+    }
+}
+
+/* Push one input out of (or to the edge of) the domain. */
+static void xu_perturb_out(xu_rng *r, cbx_affine *a, cbx_box *b)
+{
+    int i = xu_rng_int(r, 0, 2), j = xu_rng_int(r, 0, 2), k;
+    double big;
+    int RT = xu_fmt->rt, EX = xu_fmt->emax;
+    switch (xu_rng_int(r, 0, 6)) {
+    case 0: /* large entry: may or may not still fit a class */
+        a->m[i][j] = xu_gen_signed(r, xu_fmt->big_entry, EX);
+        break;
+    case 1: /* large coordinate */
+        big = xu_gen_mag(r, xu_fmt->big_coord, EX);
+        if (xu_rng_int(r, 0, 1)) { if (big > b->lo[j]) b->hi[j] = big; }
+        else if (-big < b->hi[j]) b->lo[j] = -big;
+        break;
+    case 2: /* infinite coordinate(s) */
+        switch (xu_rng_int(r, 0, 3)) {
+        case 0: b->lo[j] = -HUGE_VAL; break;
+        case 1: b->hi[j] = HUGE_VAL; break;
+        case 2: b->lo[j] = b->hi[j] = HUGE_VAL; break;
+        default: b->lo[j] = -HUGE_VAL; b->hi[j] = HUGE_VAL; break;
+        }
+        break;
+    case 3: /* infinite entry or translation */
+        big = xu_rng_sign(r) * HUGE_VAL;
+        k = xu_rng_int(r, 0, 3);
+        a->m[i][k] = big;
+        break;
+    case 4: /* translation beyond 2^rt (binary64: 2^1018) */
+        k = xu_rng_int(r, 0, 2);
+        big = k == 0 ? xu_next_up(ldexp(1.0, RT))
+            : k == 1 ? xu_fmt_max() : xu_gen_mag(r, RT + 1, EX);
+        a->m[i][3] = xu_rng_sign(r) * big;
+        break;
+    case 5: /* one ulp outward on an entry: crosses a class boundary when
+               the entry sat on it */
+        a->m[i][j] = a->m[i][j] < 0 ? -xu_next_up(-a->m[i][j]) : xu_next_up(a->m[i][j]);
+        break;
+    default: /* exact class corner, then one coordinate one ulp beyond */
+        k = xu_fmt->class_k[xu_rng_int(r, 0, XU_NCLASS - 1)];
+        a->m[i][j] = xu_rng_sign(r) * ldexp(1.0, k);
+        b->lo[j] = -ldexp(1.0, RT - k);
+        b->hi[j] = ldexp(1.0, RT - k);
+        if (xu_rng_int(r, 0, 1)) b->hi[j] = xu_next_up(b->hi[j]);
+        break;
+    }
+}
+
+/* Half-spaces (rule B): 1 to 4 box ends made infinite on their own side
+ * (lo = -inf, hi = +inf), some map entries set to +-0 (a zero column
+ * against an infinite end counts as 0) and, sometimes, one end of a
+ * finite axis made huge (beyond every class: lost only where needed). */
+static void xu_perturb_half(xu_rng *r, cbx_affine *a, cbx_box *b)
+{
+    int n = xu_rng_int(r, 1, 4), k;
+    for (k = 0; k < n; k++) {
+        int j = xu_rng_int(r, 0, 2);
+        if (xu_rng_int(r, 0, 1)) b->lo[j] = -HUGE_VAL;
+        else b->hi[j] = HUGE_VAL;
+    }
+    n = xu_rng_int(r, 0, 4);
+    for (k = 0; k < n; k++)
+    {
+        double z = xu_rng_sign(r) * 0.0;
+        int i = xu_rng_int(r, 0, 2), j = xu_rng_int(r, 0, 2);
+        a->m[i][j] = z;
+    }
+    if (xu_rng_int(r, 0, 3) == 0) {
+        int j = xu_rng_int(r, 0, 2);
+        double big = xu_rng_int(r, 0, 1) ? xu_fmt_max() : xu_gen_mag(r, xu_fmt->rt + 1, xu_fmt->emax);
+        if (xu_rng_int(r, 0, 1)) { if (isfinite(b->lo[j])) b->hi[j] = big; }
+        else if (isfinite(b->hi[j])) b->lo[j] = -big;
+    }
+}
+
+static void xu_inject_nan(xu_rng *r, cbx_affine *a, cbx_box *b)
+{
+    int p = xu_rng_int(r, 0, 17);
+    double nan = xu_rng_sign(r) * NAN;
+    if (p < 12) a->m[p / 4][p % 4] = nan;
+    else if (p < 15) b->lo[p - 12] = nan;
+    else b->hi[p - 15] = nan;
+}
+
+static void xu_inject_empty(xu_rng *r, cbx_box *b)
+{
+    int j = xu_rng_int(r, 0, 2);
+    switch (xu_rng_int(r, 0, 4)) {
+    case 0: /* one ulp inverted */
+        b->lo[j] = xu_next_up(b->hi[j]);
+        break;
+    case 1: /* inverted infinities */
+        b->lo[j] = HUGE_VAL;
+        b->hi[j] = -HUGE_VAL;
+        break;
+    case 2: /* lo = +inf: no real point, even with hi = +inf */
+        b->lo[j] = HUGE_VAL;
+        if (xu_rng_int(r, 0, 1)) b->hi[j] = HUGE_VAL;
+        break;
+    case 3: /* hi = -inf: no real point, even with lo = -inf */
+        b->hi[j] = -HUGE_VAL;
+        if (xu_rng_int(r, 0, 1)) b->lo[j] = -HUGE_VAL;
+        break;
+    default: /* swapped ends, made distinct */
+        b->lo[j] = 1.0;
+        b->hi[j] = -1.0;
+        break;
+    }
+}
+
+/* ~82% in domain by construction, ~10% pushed out, ~5% half-spaces,
+ * ~1.5% NaN, ~1.5% empty (some of those also NaN: EINVAL must win). */
+void xu_gen_case(xu_rng *r, cbx_affine *a, cbx_box *b)
+{
+    int p = xu_rng_int(r, 0, 999);
+    xu_gen_in_domain(r, a, b);
+    if (p < 100) xu_perturb_out(r, a, b);
+    else if (p < 115) xu_inject_nan(r, a, b);
+    else if (p < 130) {
+        xu_inject_empty(r, b);
+        if (p < 118) xu_inject_nan(r, a, b);
+    } else if (p < 180) {
+        xu_perturb_half(r, a, b);
+        if (p < 140) xu_perturb_out(r, a, b);
+    }
 }

@@ -64,6 +64,30 @@
 #define XU_NCLASS 18
 extern const int xu_class_k[XU_NCLASS];
 
+/* The floating-point format whose rules are checked: its unit roundoff
+ * u = 2^-p, smallest subnormal eta = 2^-emin, domain exponent rt (|t| and
+ * each product at most 2^rt), proven tightness term 2^-tight_e (the bound
+ * is 12 u S + 2^-tight_e), tiny-scale cap 2^-tiny_cap (xu_scale_tiny) and
+ * the magnitude classes (2^k, 2^(rt - k)).  binary32 values are held in
+ * doubles (exactly), so the same oracle checks the float family:
+ * xu_set_format(&xu_binary32) before checking a float result.  Everything
+ * below reads xu_fmt; the default is binary64. */
+typedef struct xu_format {
+    const char *name;
+    int p, emin, rt, tight_e, tiny_cap;
+    /* for the random cases: largest exponent (values < 2^(emax+1)), the
+     * smallest normal exponent, where "large" entries and coordinates
+     * start (perturbations out of the domain) */
+    int emax, norm_min, big_entry, big_coord;
+    int class_k[XU_NCLASS];
+} xu_format;
+extern const xu_format xu_binary64, xu_binary32;
+extern const xu_format *xu_fmt;
+void xu_set_format(const xu_format *f);
+double xu_next_up(double x);   /* the format's next value above x       */
+double xu_fmt_max(void);       /* the format's largest finite value     */
+double xu_round_fmt(double d); /* d rounded to the format (nearest)     */
+
 /* ---- the domain and the expected status, decided exactly ------------- */
 
 int xu_is_nan(double x);
@@ -344,6 +368,11 @@ double xu_rng_unit(xu_rng *r);                      /* [0, 1), 53 bits     */
  * emin <= -1022), otherwise a full mantissa with exponent in [emin, emax). */
 double xu_gen_mag(xu_rng *r, int emin, int emax);
 double xu_gen_signed(xu_rng *r, int emin, int emax); /* with -0.0 */
+/* A random case of cbx_transform_box in the current format (the values
+ * are the format's): ~82% in the domain by construction (classes, narrow
+ * exponents, cancelling translations), ~10% pushed out of it, ~5%
+ * half-spaces, ~1.5% NaN, ~1.5% empty.  The draws of test_exact. */
+void xu_gen_case(xu_rng *r, cbx_affine *a, cbx_box *b);
 /* A uniformly random rotation: a unit quaternion drawn by rejection from
  * [-1, 1)^4 (four xu_rng_unit draws per try), then its rotation matrix. */
 void xu_rand_rotation(xu_rng *r, double R[3][3]);

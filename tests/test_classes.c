@@ -96,6 +96,21 @@ static double sgn(xu_rng *r) { return xu_rng_sign(r); }
 /* Generators                                                             */
 /* ---------------------------------------------------------------------- */
 
+/* sgn(r) * (1 + unit) * 2^e and (1 + unit) * 2^e, e in [lo, hi], with the
+ * draws in a fixed order (C leaves the order of function arguments to the
+ * compiler: gcc takes them right to left on x86-64, left to right on ARM) */
+static double mant_pow(xu_rng *r, int lo, int hi)
+{
+    int e = xu_rng_int(r, lo, hi);
+    return ldexp(1.0 + xu_rng_unit(r), e);
+}
+
+static double sgn_pow(xu_rng *r, int lo, int hi)
+{
+    double s = sgn(r);
+    return s * mant_pow(r, lo, hi);
+}
+
 /* A nonzero linear entry; g = 0 realistic (2^[-5,5)), g = 1 extreme, g = 2
  * random exponents over the class kernels' fast range (|m| <= 2^509). */
 static double lin_val(xu_rng *r, int g)
@@ -106,7 +121,7 @@ static double lin_val(xu_rng *r, int g)
         return v;
     }
     if (!g || xu_rng_int(r, 0, 3) == 0)
-        return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, -5, 4));
+        return sgn_pow(r, -5, 4);
     switch (xu_rng_int(r, 0, 10)) {
     case 0: return sgn(r) * 0x1p509;
     case 1: return sgn(r) * nextafter(0x1p509, INF);     /* just past the fast range */
@@ -115,8 +130,8 @@ static double lin_val(xu_rng *r, int g)
     case 4: return sgn(r) * DBL_MIN;
     case 5: return sgn(r) * 0x1p1018;
     case 6: return sgn(r) * 1.0;
-    case 7: return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, 400, 600));
-    case 8: return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, -1060, -900));
+    case 7: return sgn_pow(r, 400, 600);
+    case 8: return sgn_pow(r, -1060, -900);
     default:
         do v = xu_gen_signed(r, -1074, 1023); while (v == 0.0 || isinf(v));
         return v;
@@ -139,8 +154,8 @@ static double tr_val(xu_rng *r, int g)
     case 3: return sgn(r) * 0x1p1019;
     case 4: return sgn(r) * DBL_MAX;
     case 5: return sgn(r) * 0x1p-1074;
-    case 6: return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, 900, 1017));
-    case 7: return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, 500, 520));
+    case 6: return sgn_pow(r, 900, 1017);
+    case 7: return sgn_pow(r, 500, 520);
     default: return xu_gen_signed(r, -1074, 1018);
     }
 }
@@ -159,7 +174,7 @@ static void rot_scale(xu_rng *r, double M[3][3])
     int i, j;
     xu_rand_rotation(r, R);
     for (j = 0; j < 3; j++) {
-        s[j] = ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, -5, 3));
+        s[j] = mant_pow(r, -5, 3);
         if (xu_rng_int(r, 0, 9) == 0) s[j] = -s[j];
     }
     for (i = 0; i < 3; i++)
@@ -278,8 +293,8 @@ static double big_end(xu_rng *r)
     case 3: return sgn(r) * nextafter(0x1p1018, INF);
     case 4: return sgn(r) * 0x1p1019;
     case 5: return sgn(r) * DBL_MAX;
-    case 6: return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, 490, 509));
-    case 7: return sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, 1000, 1017));
+    case 6: return sgn_pow(r, 490, 509);
+    case 7: return sgn_pow(r, 1000, 1017);
     default: return sgn(r) * xu_rng_unit(r) * 64.0;
     }
 }
@@ -298,7 +313,7 @@ static void gen_box(xu_rng *r, cbx_box *b, int kind)
     int j, q;
     for (j = 0; j < 3; j++) {
         double c = sgn(r) * xu_rng_unit(r) * ldexp(1.0, xu_rng_int(r, -4, 8));
-        double h = xu_rng_int(r, 0, 19) == 0 ? 0.0 : ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, -12, 5));
+        double h = xu_rng_int(r, 0, 19) == 0 ? 0.0 : mant_pow(r, -12, 5);
         b->lo[j] = c - h;
         b->hi[j] = c + h;
     }
@@ -1013,7 +1028,10 @@ static void make_ood(xu_rng *r, cbx_affine *a)
 {
     int i = xu_rng_int(r, 0, 2);
     if (xu_rng_int(r, 0, 1)) a->m[i][3] = sgn(r) * (xu_rng_int(r, 0, 1) ? 0x1p1019 : DBL_MAX);
-    else a->m[i][xu_rng_int(r, 0, 2)] = sgn(r) * ldexp(1.0 + xu_rng_unit(r), xu_rng_int(r, 1000, 1023));
+    else {
+        double v = sgn_pow(r, 1000, 1023); /* then the column: gcc's order, made explicit */
+        a->m[i][xu_rng_int(r, 0, 2)] = v;
+    }
 }
 
 static void run_motion(xu_rng *r, xu_exact *x, mstats *st, long n)

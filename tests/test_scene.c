@@ -375,11 +375,15 @@ int main(int argc, char **argv)
     printf("test_scene: %d files, %ld leaves, %ld scene evaluations at sampled times, "
            "%ld exact containment checks, %ld failures\n",
            argc - 1, st.leaves, times, st.checks, st.fails);
+    printf("  check containment %ld leaf-axes checked, %ld failed\n", st.checks, st.fails);
     printf("test_scene: tightness (world width / exact width, static scenes, %ld axes): "
            "max %.6f median %.9f\n", st.ratios_n, mx, med);
     printf("test_scene: %d broken scenes, %d not rejected at the right line\n", nerr, efails);
     free(st.ratios);
     int failed = bad || st.fails || efails || st.checks == 0;
     printf("%s\n", failed ? "test_scene: FAILED" : "test_scene: passed");
+    /* the closing line CI reads: one item per exact check and broken file */
+    long items = st.checks + nerr + (argc - 1), nfail = st.fails + efails + bad + (st.checks == 0);
+    printf("%ld passed, %ld failed\n", items - nfail, nfail);
     return failed ? 1 : 0;
 }

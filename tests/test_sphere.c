@@ -891,7 +891,11 @@ static void gen_tiny_rotation(xu_rng *r, double R[3][3])
 {
     static const double ang[] = { 1e-8, 1e-15, 1e-300, 1e-20, 1e-100, 1e-4 };
     double th = ang[xu_rng_int(r, 0, 5)] * (0.5 + xu_rng_unit(r));
-    double c = cos(th), s = sin(th);
+    /* Taylor series in + and * only (correctly rounded everywhere, so the
+     * same doubles on every architecture; libm's cos and sin are not):
+     * th <= 1.5e-4, so the omitted terms are below an ulp */
+    double t2 = th * th;
+    double c = 1.0 - t2 / 2.0 + t2 * t2 / 24.0, s = th - th * t2 / 6.0;
     int ax = xu_rng_int(r, 0, 2), u = (ax + 1) % 3, v = (ax + 2) % 3, i, j;
     for (i = 0; i < 3; i++)
         for (j = 0; j < 3; j++) R[i][j] = i == j ? 1.0 : 0.0;
@@ -928,8 +932,13 @@ static void gen_linear(xu_rng *r, double L[3][3], int emax)
         int kind = xu_rng_int(r, 0, 2);
         for (j = 0; j < 3; j++) v[j] = xu_gen_signed(r, emax - 60, emax - 8);
         for (i = 0; i < 3; i++) {
-            double f = kind == 0 ? ldexp(xu_rng_sign(r), -xu_rng_int(r, 0, 8))
-                                 : xu_rng_unit(r) - 0.5;
+            double f;
+            if (kind == 0) { /* the exponent first: gcc's x86-64 argument order, made explicit */
+                int e = -xu_rng_int(r, 0, 8);
+                f = ldexp(xu_rng_sign(r), e);
+            } else {
+                f = xu_rng_unit(r) - 0.5;
+            }
             for (j = 0; j < 3; j++) L[i][j] = f * v[j];
         }
         if (kind == 2) { /* plus a zero row */

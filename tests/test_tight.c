@@ -471,6 +471,9 @@ static double sgm(xu_rng *r, int e) { return xu_rng_sign(r) * gm(r, e); }
 
 static int clampi(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
+/* Callers draw w before u: the order gcc gives sort_axis(b, j, U, W) on
+ * x86-64 (arguments right to left), made explicit so that ARM draws the
+ * same cases. */
 static void sort_axis(cbx_box *b, int j, double u, double w)
 {
     b->lo[j] = u < w ? u : w;
@@ -531,13 +534,13 @@ static void gen_int(xu_rng *r, cbx_affine *a, cbx_box *b)
             for (j = 0; j < 3; j++) a->m[i][j] = (double)xu_rng_int(r, -4, 4);
             a->m[i][3] = (double)xu_rng_int(r, -1000000, 1000000);
         }
-        for (j = 0; j < 3; j++) sort_axis(b, j, dy(r, 1000, 0), dy(r, 1000, 0));
+        for (j = 0; j < 3; j++) { double w = dy(r, 1000, 0); sort_axis(b, j, dy(r, 1000, 0), w); }
     } else if (p < 45) { /* small dyadics */
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++) a->m[i][j] = dy(r, 64, 3);
             a->m[i][3] = dy(r, 1 << 20, 2);
         }
-        for (j = 0; j < 3; j++) sort_axis(b, j, dy(r, 1 << 20, 4), dy(r, 1 << 20, 4));
+        for (j = 0; j < 3; j++) { double w = dy(r, 1 << 20, 4); sort_axis(b, j, dy(r, 1 << 20, 4), w); }
     } else if (p < 60) { /* permutation / sign flip, scales 2^s */
         int perm[3] = { 0, 1, 2 };
         for (j = 2; j > 0; j--) {
@@ -550,16 +553,18 @@ static void gen_int(xu_rng *r, cbx_affine *a, cbx_box *b)
             a->m[i][perm[i]] = xu_rng_sign(r) * ldexp(1.0, xu_rng_int(r, -3, 3));
             a->m[i][3] = xu_rng_int(r, 0, 3) ? dy(r, 1 << 24, 3) : 0.0;
         }
-        for (j = 0; j < 3; j++) sort_axis(b, j, dy(r, 1 << 30, 6), dy(r, 1 << 30, 6));
+        for (j = 0; j < 3; j++) { double w = dy(r, 1 << 30, 6); sort_axis(b, j, dy(r, 1 << 30, 6), w); }
     } else if (p < 80) { /* large integers: sums beyond 2^53 */
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++)
                 a->m[i][j] = (double)xu_rng_int(r, -(1 << 26), 1 << 26);
-            a->m[i][3] = ldexp((double)xu_rng_int(r, -(1 << 30), 1 << 30), xu_rng_int(r, 0, 30));
+            int e = xu_rng_int(r, 0, 30);
+            a->m[i][3] = ldexp((double)xu_rng_int(r, -(1 << 30), 1 << 30), e);
         }
-        for (j = 0; j < 3; j++)
-            sort_axis(b, j, (double)xu_rng_int(r, -(1 << 30), 1 << 30),
-                      (double)xu_rng_int(r, -(1 << 30), 1 << 30));
+        for (j = 0; j < 3; j++) {
+            double w = (double)xu_rng_int(r, -(1 << 30), 1 << 30);
+            sort_axis(b, j, (double)xu_rng_int(r, -(1 << 30), 1 << 30), w);
+        }
     } else { /* powers of two with wide spreads */
         for (i = 0; i < 3; i++) {
             for (j = 0; j < 3; j++)
@@ -568,9 +573,10 @@ static void gen_int(xu_rng *r, cbx_affine *a, cbx_box *b)
             a->m[i][3] = xu_rng_int(r, 0, 3) ? xu_rng_sign(r) * ldexp(1.0, xu_rng_int(r, -80, 80))
                                              : 0.0;
         }
-        for (j = 0; j < 3; j++)
-            sort_axis(b, j, xu_rng_sign(r) * ldexp(1.0, xu_rng_int(r, -40, 40)),
-                      xu_rng_int(r, 0, 2) ? xu_rng_sign(r) * ldexp(1.0, xu_rng_int(r, -40, 40)) : 0.0);
+        for (j = 0; j < 3; j++) {
+            double w = xu_rng_int(r, 0, 2) ? xu_rng_sign(r) * ldexp(1.0, xu_rng_int(r, -40, 40)) : 0.0;
+            sort_axis(b, j, xu_rng_sign(r) * ldexp(1.0, xu_rng_int(r, -40, 40)), w);
+        }
     }
     /* scale by powers of two (exact unless a value becomes subnormal) */
     if (xu_rng_int(r, 0, 2) == 0) {
@@ -701,7 +707,8 @@ static void gen_special(xu_rng *r, cbx_affine *a, cbx_box *b)
     }
     for (j = 0; j < 3; j++) {
         int p = xu_rng_int(r, 0, 99);
-        sort_axis(b, j, gen_coord4(r), gen_coord4(r));
+        double w = gen_coord4(r);
+        sort_axis(b, j, gen_coord4(r), w);
         if (p < 20) b->lo[j] = -INF;
         else if (p < 40) b->hi[j] = INF;
         else if (p < 45) { b->lo[j] = -INF; b->hi[j] = INF; }
@@ -720,7 +727,7 @@ static void gen_special(xu_rng *r, cbx_affine *a, cbx_box *b)
 static void gen_boundary(xu_rng *r, cbx_affine *a, cbx_box *b)
 {
     int i, j, kind = xu_rng_int(r, 0, 2);
-    for (j = 0; j < 3; j++) sort_axis(b, j, xu_gen_signed(r, -4, 4), xu_gen_signed(r, -4, 4));
+    for (j = 0; j < 3; j++) { double w = xu_gen_signed(r, -4, 4); sort_axis(b, j, xu_gen_signed(r, -4, 4), w); }
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             int e;

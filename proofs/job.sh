@@ -1,0 +1,84 @@
+#!/bin/sh
+# One proof job of proofs/run.sh: a Frama-C/WP run on one translation unit
+# and one selection of goals.  Usage: sh proofs/job.sh NAME (run from the
+# checkout's root, with WHY3CONFIG set; proofs/run.sh does both).
+#   L64, L32  the lemmas of each family (proofs/lemmas.c, proofs/lemmas_f.c)
+#   A64, A32  rounding primitives and kernels, with -wp-split (two-sided
+#             assertions: one goal per side proves fastest)
+#   B64, B32  everything else (domain checks, public functions), without
+#             -wp-split (splitting the behaviors' postconditions multiplies
+#             goals); B64 is cut in two (B64a, B64b) to balance the jobs
+#   S64, S32  the smoke tests alone (-wp-smoke-tests, every regular goal
+#             deselected): a smoke goal "passes" when CVC4 can NOT derive
+#             false from its context within CBX_SMOKE_STEPS resource units
+#             (a deterministic budget, independent of the machine's load);
+#             see SMOKE below for the categories
+# Writes build/proof/wp-NAME.log (the final pass) and build/proof/wp-NAME.time
+# (seconds; both passes).
+set -eu
+name=$1
+root=$(pwd)
+out=build/proof
+FC="frama-c -cpp-extra-args=-I$root/src -cpp-extra-args=-I$root/specs"
+PAR=${CBX_WP_PAR:-2}
+# each family's jobs use its own prover entries (proofs/setup.sh: the same
+# provers, with the axioms that family never needs left out)
+case $name in *64*) fam=64 ;; *) fam=32 ;; esac
+WP="-wp -wp-rte -wp-par $PAR"   # + the provers, limits and cache of each pass (below)
+# Smoke tests: every category but dead calls.  A dead-call test asks whether
+# the code after a call is reachable; for a callee whose contract is proven
+# and that terminates (every function here: no recursion, every loop has a
+# proven variant) it always is once the caller's context is consistent,
+# which the caller's own requires and dead-code tests check.  The callees
+# without a proven body (the trusted contracts: cbx_pinf, cbx_sqrt_rn,
+# two_sum, ...) are covered by the dead-code test after their calls
+# (make smoke-teeth injects an inconsistent trusted postcondition and sees
+# it caught).  Budget: CBX_SMOKE_STEPS CVC4 resource units (80,000: the
+# smallest budget of 40k, 60k, 80k that catches every case of
+# scripts/smoke_teeth.sh with margin).
+SMOKE="-wp -wp-rte -wp-smoke-tests ${CBX_SMOKE_OPTS:--wp-no-smoke-dead-call} -wp-prover cvc4r$fam -wp-steps ${CBX_SMOKE_STEPS:-80000} -wp-smoke-timeout ${CBX_SMOKE_TIMEOUT:-30} -wp-par $PAR -wp-cache none"
+NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@invariant,-@variant,-@breaks,-@continues,-@returns,-@complete_behaviors,-@disjoint_behaviors,-@terminates,-@decreases,-@check"
+# Functions proved with -wp-split, per family (-wp-fct rejects a name
+# that the translation unit does not define).
+KERNELS32=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,term_lo,term_hi,term_mag,axis_lo,axis_hi,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point
+KERNELS64=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,term_lo,term_hi,term_mag,axis_lo,axis_hi,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point,eft_sum,pass8,decide,certify,approx,neighbour,eft_ok,tighten_core,exact_terms,tighten_lo,tighten_hi,tight_lo_sound,tight_hi_sound,tight_axis,cbx_add_dn,cbx_add_up,in_rng,end_pair,sign_step,span_mul,span_add,span_id,col0_sound,col1_sound,col2_sound,sparse_axis,lerp_pt,mot_corners,mot_points_lo,mot_points_hi
+# The binary64 public functions and their helpers that are not kernels,
+# in two halves of similar proof time (B64a: tight mode, classes, motion).
+B64A=cbx_transform_box_tight,cbx_classify,cbx_transform_box_as,kern_identity,kern_translate,kern_sparse,fast_identity,fast_translate,fast_sparse,ends_ok,tr_ok,lin_ok,axis_full,full_row,cbx_motion_box,mot_union,mot_axis_union,one_box,one_box_as,step,put_box,severity,cbx_transform_boxes
+case $name in
+  L64) set -- proofs/lemmas.c $WP ;;
+  L32) set -- proofs/lemmas_f.c $WP ;;
+  A64) set -- proofs/all.c $WP -wp-split -wp-fct $KERNELS64 ;;
+  A32) set -- proofs/all_f.c $WP -wp-split -wp-fct $KERNELS32 ;;
+  B64a) set -- proofs/all.c $WP -wp-fct $B64A ;;
+  B64b) set -- proofs/all.c $WP -wp-skip-fct $KERNELS64,$B64A ;;
+  B32) set -- proofs/all_f.c $WP -wp-skip-fct $KERNELS32 ;;
+  S64) set -- proofs/all.c $SMOKE $NOGOALS ;;
+  S32) set -- proofs/all_f.c $SMOKE $NOGOALS ;;
+  *) echo "job.sh: unknown job $name" >&2; exit 2 ;;
+esac
+start=$(date +%s)
+case $name in
+  S*)
+    # shellcheck disable=SC2086
+    $FC "$@" > $out/wp-$name.log 2>&1 || true ;;
+  *)
+    # Two passes.  1: CVC4 alone, a short timeout: it proves most goals in
+    # well under a second.  2: both provers raced with the full timeout, on
+    # what is left: a goal pass 1 proved is read back from the cache of
+    # this job (WP's cache keeps valid results only; it starts empty and is
+    # used by nothing else), so every result comes from a prover of this
+    # run.  Racing both provers on every goal cost twice the CPU.
+    cache=$out/cache-$name
+    rm -rf "$cache"; mkdir -p "$cache"
+    # shellcheck disable=SC2086
+    $FC "$@" -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-2} -wp-cache update -wp-cache-dir "$cache" \
+      > $out/wp-$name.pass1.log 2>&1 || true
+    # shellcheck disable=SC2086
+    $FC "$@" -wp-prover cvc4r$fam,z3r$fam -wp-timeout ${CBX_WP_TIMEOUT:-120} -wp-cache update -wp-cache-dir "$cache" \
+      > $out/wp-$name.log 2>&1 || true
+    rm -rf "$cache" ;;
+esac
+end=$(date +%s)
+echo $((end - start)) > $out/wp-$name.time
+echo "proof: job $name done in $((end - start)) s ($(grep -c '\] Goal\|Smoke-test' $out/wp-$name.log) goals)"

@@ -1,0 +1,4 @@
+/* The ACSL lemmas of the binary32 family (the binary32 instance of
+ * specs/cbx_spec.h, with the shared specs/cbx_logic.h and cbx_ball.h). */
+#define CBX_FRAMAC_ONLY_32 1
+#include "certbox.h"

@@ -1,0 +1,56 @@
+#!/bin/sh
+# make check-cross: the exact test suites on a second architecture.
+# Every suite is cross-compiled for 32-bit ARM (arm-linux-gnueabihf, VFP,
+# statically linked with the armhf GMP and MPFR), run under qemu-arm, and
+# its output compared line by line with the same run on this machine: IEEE
+# arithmetic is deterministic, so every count, status, excess statistic and
+# histogram must be the same (only durations are left out).  Then the
+# build check on ARM: cbx_ieee_check() == 0, and a build of its sources in
+# GCC's default GNU mode for a VFPv4 CPU (which has fused multiply-add and
+# contracts a*b+c there) must be caught.
+# Usage: sh scripts/cross.sh  (run from the checkout's root, after make all)
+set -eu
+XCC=${XCC:-arm-linux-gnueabihf-gcc}
+QEMU=${QEMU:-qemu-arm}
+B=build/cross
+mkdir -p $B
+F="-std=c99 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fno-fast-math -O2 -Isrc -Itests"
+LIB="src/cbx_*.c"
+# suite and arguments (host and ARM alike); sizes keep qemu under ~2 minutes
+SUITES=${CROSS_SUITES:-"badinput: special: exact:200000,1 float:50000,1 cbox:30000,1 sphere:20000,1 alias:10000,1 halfspace:20,1 batch:20,1 tight:10,1 classes:20000,1 chain:200,5,1"}
+pass=0; fail=0
+echo "cross: $($XCC --version | head -1); $($QEMU --version | head -1)"
+start=$(date +%s)
+for s in $SUITES; do
+  name=${s%%:*}; args=$(echo "${s#*:}" | tr ',' ' ')
+  # shellcheck disable=SC2086
+  $XCC $F tests/test_$name.c tests/exact_util.c $LIB -static -lmpfr -lgmp -lm -o $B/test_$name
+  # shellcheck disable=SC2086
+  ./build/test_$name $args > $B/$name.host.txt 2>&1 || true
+  # shellcheck disable=SC2086
+  $QEMU $B/test_$name $args > $B/$name.arm.txt 2>&1 || true
+  # durations are the only thing allowed to differ
+  T='s/[0-9]+(\.[0-9]+)? ?(s|ms|seconds)\b/<time>/g'
+  grep -v -i 'cpu time' $B/$name.host.txt | sed -E "$T" > $B/$name.host.cmp || true
+  grep -v -i 'cpu time' $B/$name.arm.txt | sed -E "$T" > $B/$name.arm.cmp || true
+  last=$(tail -1 $B/$name.arm.txt)
+  if cmp -s $B/$name.host.cmp $B/$name.arm.cmp && echo "$last" | grep -q ' 0 failed$'; then
+    pass=$((pass + 1)); echo "cross: ok   test_$name $args: ARM output identical to the host's ($(wc -l < $B/$name.arm.cmp) lines; $last)"
+  else
+    fail=$((fail + 1)); echo "cross: FAIL test_$name $args: last line '$last'"; diff $B/$name.host.cmp $B/$name.arm.cmp | head -5 || true
+  fi
+done
+# the build check on ARM
+$XCC $F tests/test_ieee.c $LIB -static -lm -o $B/test_ieee
+if $QEMU $B/test_ieee plain 0 > $B/ieee.txt; then pass=$((pass + 1)); echo "cross: ok   $(head -1 $B/ieee.txt)"
+else fail=$((fail + 1)); echo "cross: FAIL $(head -1 $B/ieee.txt)"; fi
+G="-std=gnu99 -O2 -Isrc -mfpu=neon-vfpv4 -mfloat-abi=hard"
+$XCC $G -c src/cbx_ieee.c -o $B/v1.o && $XCC $G -c src/cbx_ieee_f.c -o $B/v2.o
+$XCC $F tests/test_ieee.c $B/v1.o $B/v2.o src/cbx_status.c -static -lm -o $B/test_ieee_gnu
+if $QEMU $B/test_ieee_gnu plain 1 > $B/ieee_gnu.txt; then
+  pass=$((pass + 1)); echo "cross: ok   GNU mode on VFPv4 (contracts a*b+c): $(head -1 $B/ieee_gnu.txt | sed 's/.*: //')"
+else fail=$((fail + 1)); echo "cross: FAIL GNU mode on VFPv4 not caught: $(head -1 $B/ieee_gnu.txt)"; fi
+end=$(date +%s)
+echo "cross: $pass passed, $fail failed in $((end - start)) s (armhf under qemu-user)"
+echo "$pass passed, $fail failed"
+[ $fail = 0 ]

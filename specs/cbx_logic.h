@@ -1,0 +1,124 @@
+/*
+ * ACSL logic of certbox that does not depend on the floating-point format:
+ * real-valued definitions and lemmas over the reals, shared by the binary64
+ * and binary32 families (each family's own logic, with its domain and
+ * tightness constants, is specs/cbx_spec.h, instantiated once per family).
+ * Read by Frama-C only; certbox.h includes this file once.
+ *
+ * Arithmetic in these definitions is exact real arithmetic: `m*l` is the
+ * exact product, not the rounded one.
+ */
+#ifndef CBX_LOGIC_H
+#define CBX_LOGIC_H
+
+/*@ // ---------------------------------------------------------------------
+    // One magnitude class: |m| <= bm and |c| <= bc (specs/cbx_spec.h lists
+    // the classes of each format's domain).
+    // ---------------------------------------------------------------------
+    predicate cls(real m, real c, real bm, real bc) =
+      -bm <= m <= bm && -bc <= c <= bc;
+
+    // ---------------------------------------------------------------------
+    // One term of Arvo's sum: m*c for c in {l, h}.
+    // ---------------------------------------------------------------------
+    logic real tmin(real m, real l, real h) = \min(m*l, m*h);
+    logic real tmax(real m, real l, real h) = \max(m*l, m*h);
+    logic real tmag(real m, real l, real h) = \max(\abs(m*l), \abs(m*h));
+
+    // Exact bounds of one output coordinate over the box, and its scale
+    // S = |t| + sum_j |m_j| max(|l_j|, |h_j|) used by the tightness bound.
+    logic real row_lo(real m0, real m1, real m2, real t,
+                      real l0, real h0, real l1, real h1, real l2, real h2) =
+      t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2);
+    logic real row_hi(real m0, real m1, real m2, real t,
+                      real l0, real h0, real l1, real h1, real l2, real h2) =
+      t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2);
+    logic real row_mag(real m0, real m1, real m2, real t,
+                       real l0, real h0, real l1, real h1, real l2, real h2) =
+      \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + tmag(m2, l2, h2);
+
+    // r is below the image of all 8 corners (c_j in {l_j, h_j}).
+    predicate below8(real r, real m0, real m1, real m2, real t,
+                     real l0, real h0, real l1, real h1, real l2, real h2) =
+         r <= m0*l0 + m1*l1 + m2*l2 + t && r <= m0*l0 + m1*l1 + m2*h2 + t
+      && r <= m0*l0 + m1*h1 + m2*l2 + t && r <= m0*l0 + m1*h1 + m2*h2 + t
+      && r <= m0*h0 + m1*l1 + m2*l2 + t && r <= m0*h0 + m1*l1 + m2*h2 + t
+      && r <= m0*h0 + m1*h1 + m2*l2 + t && r <= m0*h0 + m1*h1 + m2*h2 + t;
+    // r is above the image of all 8 corners.
+    predicate above8(real r, real m0, real m1, real m2, real t,
+                     real l0, real h0, real l1, real h1, real l2, real h2) =
+         r >= m0*l0 + m1*l1 + m2*l2 + t && r >= m0*l0 + m1*l1 + m2*h2 + t
+      && r >= m0*l0 + m1*h1 + m2*l2 + t && r >= m0*l0 + m1*h1 + m2*h2 + t
+      && r >= m0*h0 + m1*l1 + m2*l2 + t && r >= m0*h0 + m1*l1 + m2*h2 + t
+      && r >= m0*h0 + m1*h1 + m2*l2 + t && r >= m0*h0 + m1*h1 + m2*h2 + t;
+
+
+    // Sums of per-column facts, over the reals (products are atoms).
+    lemma ext_sum_lo: \forall real r, m0, m1, m2, t, v0, v1, v2, p0, p1, p2;
+      r <= m0*v0 + m1*v1 + m2*v2 + t ==>
+      m0*v0 <= m0*p0 ==> m1*v1 <= m1*p1 ==> m2*v2 <= m2*p2 ==>
+      r <= m0*p0 + m1*p1 + m2*p2 + t;
+    lemma ext_sum_hi: \forall real r, m0, m1, m2, t, v0, v1, v2, p0, p1, p2;
+      r >= m0*v0 + m1*v1 + m2*v2 + t ==>
+      m0*v0 >= m0*p0 ==> m1*v1 >= m1*p1 ==> m2*v2 >= m2*p2 ==>
+      r >= m0*p0 + m1*p1 + m2*p2 + t;
+    // The one nonlinear fact of the half-space proof, with a product as
+    // its trigger (the lemma functions of src/cbx_vertex.h use it; a named
+    // predicate, so that WP's simplifier leaves the product as it is and
+    // the lemma has a trigger).
+    predicate nn_prod(real a, real b) = 0 <= a*b;
+    lemma mul_nonneg: \forall real a, b; 0 <= a ==> 0 <= b ==> nn_prod(a, b);
+    // The vertex of [l, h] where m*x is least (vlo) or greatest (vhi):
+    // an end chosen by the sign of m; 0 when m == 0 (0 * inf = 0).
+    logic real vlo(real m, real l, real h) = m > 0 ? l : (m < 0 ? h : 0);
+    logic real vhi(real m, real l, real h) = m > 0 ? h : (m < 0 ? l : 0);
+
+    // Severity of a status, for "the most severe status met":
+    // CBX_OK 0 < CBX_EMPTY 1 < CBX_ERANGE 2 < CBX_EINVAL 3.
+    logic integer sev(integer s) =
+      s == CBX_EINVAL ? 3 : (s == CBX_ERANGE ? 2 : (s == CBX_EMPTY ? 1 : 0));
+
+    // ---------------------------------------------------------------------
+    // Center/half-diagonal form: the real box [oc - oh, oc + oh] of one
+    // output axis and the input box [c_j - h_j, c_j + h_j].
+    // ---------------------------------------------------------------------
+    logic real crow_c(real m0, real m1, real m2, real t, real c0, real c1, real c2) =
+      m0*c0 + m1*c1 + m2*c2 + t;
+    logic real crow_h(real m0, real m1, real m2, real h0, real h1, real h2) =
+      \abs(m0*h0) + \abs(m1*h1) + \abs(m2*h2);
+    logic real crow_mag(real m0, real m1, real m2, real t, real c0, real c1, real c2,
+                        real h0, real h1, real h2) =
+      \abs(t) + \abs(m0*c0) + \abs(m1*c1) + \abs(m2*c2) + crow_h(m0, m1, m2, h0, h1, h2);
+
+    // |exact center - oc| + exact half <= oh: [oc-oh, oc+oh] holds the image.
+    predicate cbox_core(real oc, real oh, real m0, real m1, real m2, real t,
+                        real c0, real c1, real c2, real h0, real h1, real h2) =
+      \abs(crow_c(m0, m1, m2, t, c0, c1, c2) - oc) + crow_h(m0, m1, m2, h0, h1, h2) <= oh;
+
+    // The same, stated on the 8 corners c_j -+ h_j.
+    predicate cbox_corners(real oc, real oh, real m0, real m1, real m2, real t,
+                           real c0, real c1, real c2, real h0, real h1, real h2) =
+      below8(oc - oh, m0, m1, m2, t, c0 - h0, c0 + h0, c1 - h1, c1 + h1, c2 - h2, c2 + h2)
+      && above8(oc + oh, m0, m1, m2, t, c0 - h0, c0 + h0, c1 - h1, c1 + h1, c2 - h2, c2 + h2);
+
+    lemma cbox_core_corners:
+      \forall real oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2;
+        cbox_core(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2) ==>
+        cbox_corners(oc, oh, m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
+
+    // A column whose coefficient is 0 is dropped from a row (0 * inf = 0):
+    // its center and half-width count as 0, whatever they are.
+    logic real dz(real m, real x) = m == 0 ? 0 : x;
+*/
+
+/* Argument lists of the value predicates of specs/cbx_spec.h, read at
+ * label L (the 12 map entries; the 6 box ends). */
+#define CBX_AV(a, L) \
+  \at((a)->m[0][0], L), \at((a)->m[0][1], L), \at((a)->m[0][2], L), \at((a)->m[0][3], L), \
+  \at((a)->m[1][0], L), \at((a)->m[1][1], L), \at((a)->m[1][2], L), \at((a)->m[1][3], L), \
+  \at((a)->m[2][0], L), \at((a)->m[2][1], L), \at((a)->m[2][2], L), \at((a)->m[2][3], L)
+#define CBX_BV(b, L) \
+  \at((b)->lo[0], L), \at((b)->hi[0], L), \at((b)->lo[1], L), \at((b)->hi[1], L), \
+  \at((b)->lo[2], L), \at((b)->hi[2], L)
+
+#endif /* CBX_LOGIC_H */

@@ -1,0 +1,225 @@
+/*
+ * The public API of one floating-point family, written once for binary64
+ * (double) and instantiated for binary32 (float) by certbox.h: in the
+ * float family every type and function name ends in f (cbx_affinef,
+ * cbx_boxf, cbx_cboxf, cbx_transform_boxf, cbx_transform_boxesf,
+ * cbx_transform_cboxf, cbx_box_to_cboxf, cbx_cbox_to_boxf,
+ * cbx_sphere_boxf, cbx_ellipsoid_boxf), the arguments are float, and the
+ * constants of the statements are binary32's: u = 2^-24 instead of 2^-53,
+ * eta = 2^-149 instead of 2^-1074, and the domain bounds given in
+ * parentheses below (2^122 where binary64 has 2^1018).  The contracts
+ * (ACSL, proven by Frama-C/WP for both families) use the logic of
+ * specs/cbx_spec.h in the same way.
+ *
+ * Do not include this file directly: include certbox.h.  No include guard
+ * (certbox.h includes it once per family, between cbx_prec_begin.h and
+ * cbx_prec_end.h).
+ */
+
+/* Transform an axis-aligned box by an affine map (Arvo's interval form,
+ * outward rounded).  Status and output:
+ *   NaN anywhere in *a or *in       -> CBX_EINVAL, *out = [-inf, +inf]^3
+ *   lo[j] > hi[j] for some j        -> CBX_EMPTY,  *out = lo +inf, hi -inf
+ *   some axis outside the domain    -> CBX_ERANGE, that axis [-inf, +inf]
+ * (the domain and the proven statement: certbox.h's header comment; in the
+ * float family the bounds 2^1018, 2^509 become 2^122, 2^61, u = 2^-24 and
+ * the tightness term 2^-1065 becomes 2^-140)
+ *   otherwise                       -> CBX_OK, every axis proven sound
+ * out may be in itself (in-place update); otherwise *out may not overlap
+ * *a or *in. */
+/*@ requires valid_a:   \valid_read(a);
+    requires valid_in:  \valid_read(in);
+    requires valid_out: \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+
+    behavior nan_input:
+      assumes has_nan(a, in);
+      ensures \result == CBX_EINVAL;
+      ensures whole_space(out);
+    behavior empty_input:
+      assumes !has_nan(a, in) && is_empty(in);
+      ensures \result == CBX_EMPTY;
+      ensures empty_out(out);
+    behavior box_input:
+      assumes !has_nan(a, in) && !is_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: axis_sound_s(out->lo[0], out->hi[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre), \at(a->m[0][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis1: axis_sound_s(out->lo[1], out->hi[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre), \at(a->m[1][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis2: axis_sound_s(out->lo[2], out->hi[2],
+        \at(a->m[2][0], Pre), \at(a->m[2][1], Pre), \at(a->m[2][2], Pre), \at(a->m[2][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures ok_iff: \result == CBX_OK <==>
+        \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out);
+
+/* Batch form: out[k] = the box of in[k] under *a, for k = 0 .. n-1, each with
+ * cbx_transform_box's promise (proven for every k).  binary64: the map is
+ * classified once and every box goes through the class kernel, so out[k]
+ * is exactly cbx_transform_box_as(a, cbx_classify(a), in + k, out + k)'s
+ * output; binary32: out[k] is exactly cbx_transform_boxf(a, in + k, out + k)'s.
+ * Returns the most severe status met (CBX_EINVAL, then CBX_ERANGE, then
+ * CBX_EMPTY, then CBX_OK; CBX_OK when n == 0).  Every out[k] is written.
+ * The arrays in and out may not overlap, and out may not overlap *a. */
+/*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
+    requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
+    assigns out[0 .. n - 1];
+    ensures done: \forall integer k; 0 <= k < n ==>
+      box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]);
+    ensures worst: \forall integer k; 0 <= k < n ==>
+      box_sev_le(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
+    ensures met: n > 0 ==> \exists integer k; 0 <= k < n &&
+      box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
+    ensures none: n == 0 ==> \result == CBX_OK;
+    ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
+*/
+cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t n);
+
+/* ---- center/half-diagonal form (Arvo's Fig. 2) -------------------------
+ * A cbx_cbox means the exact real box [c - h, c + h] (per axis); h >= 0.
+ * h < 0 on some axis means an empty box.  Every function below is sound for
+ * that meaning: the rounding of the center is paid for in the half-diagonal.
+ * Status and output follow cbx_transform_box:
+ *   NaN anywhere           -> CBX_EINVAL, out: c = 0, h = +inf on every axis
+ *   h < 0 on some axis     -> CBX_EMPTY,  out: c = 0, h = -inf on every axis
+ *   axis outside domain    -> CBX_ERANGE, that axis c = 0, h = +inf
+ * Domain of cbx_transform_cbox: as for cbx_transform_box with the pairs
+ * (m[i][j], c[j]) and (m[i][j], h[j]).  Domain of the conversions: every
+ * input finite with magnitude <= 2^1019 (binary32: 2^123). */
+
+/* Arvo's center/half-diagonal form: c' = M c + T, h' = |M| h, outward. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes cbox_has_nan(a, in);
+      ensures \result == CBX_EINVAL && cwhole(out);
+    behavior empty_input:
+      assumes !cbox_has_nan(a, in) && cbox_empty(in);
+      ensures \result == CBX_EMPTY && cempty(out);
+    behavior box_input:
+      assumes !cbox_has_nan(a, in) && !cbox_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: caxis_sound_s(out->c[0], out->h[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre), \at(a->m[0][3], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->c[2], Pre),
+        \at(in->h[0], Pre), \at(in->h[1], Pre), \at(in->h[2], Pre));
+      ensures axis1: caxis_sound_s(out->c[1], out->h[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre), \at(a->m[1][3], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->c[2], Pre),
+        \at(in->h[0], Pre), \at(in->h[1], Pre), \at(in->h[2], Pre));
+      ensures axis2: caxis_sound_s(out->c[2], out->h[2],
+        \at(a->m[2][0], Pre), \at(a->m[2][1], Pre), \at(a->m[2][2], Pre), \at(a->m[2][3], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->c[2], Pre),
+        \at(in->h[0], Pre), \at(in->h[1], Pre), \at(in->h[2], Pre));
+      ensures ok_iff: \result == CBX_OK <==>
+        \at(crow_ok(a, in, 0) && crow_ok(a, in, 1) && crow_ok(a, in, 2), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox *out);
+
+/* [lo, hi] -> (c, h) with [c - h, c + h] containing [lo, hi]. */
+/*@ requires valid: \valid_read(in) && \valid(out);
+    requires sep: \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes box_nan(in);
+      ensures \result == CBX_EINVAL && cwhole(out);
+    behavior empty_input:
+      assumes !box_nan(in) && is_empty(in);
+      ensures \result == CBX_EMPTY && cempty(out);
+    behavior box_input:
+      assumes !box_nan(in) && !is_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures ax0: b2c_axis(in, out, 0);
+      ensures ax1: b2c_axis(in, out, 1);
+      ensures ax2: b2c_axis(in, out, 2);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out);
+
+/* (c, h) -> [lo, hi] containing [c - h, c + h]. */
+/*@ requires valid: \valid_read(in) && \valid(out);
+    requires sep: \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes cbox_nan(in);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior empty_input:
+      assumes !cbox_nan(in) && cbox_empty(in);
+      ensures \result == CBX_EMPTY && empty_out(out);
+    behavior box_input:
+      assumes !cbox_nan(in) && !cbox_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures ax0: c2b_axis(in, out, 0);
+      ensures ax1: c2b_axis(in, out, 1);
+      ensures ax2: c2b_axis(in, out, 2);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out);
+
+/* ---- spheres and ellipsoids: exact (dual-quadric) bounds ---------------
+ * cbx_sphere_box: the image of the unit ball {p : |p| <= 1} under the affine
+ * map: axis i is m[i][3] -+ sqrt(m[i][0]^2 + m[i][1]^2 + m[i][2]^2), rounded
+ * outward.  Domain: every entry finite, |m[i][j]| <= 2^509 (j < 3),
+ * |m[i][3]| <= 2^1018 (binary32: 2^61 and 2^122).
+ * cbx_ellipsoid_box: the ellipsoid center + rot * diag(radii) * p, |p| <= 1
+ * (rot need not be orthogonal; radii may be negative or zero).  Domain:
+ * |rot[i][j]| <= 2^254, |radii[j]| <= 2^254, |center[i]| <= 2^1018
+ * (binary32: 2^30, 2^30 and 2^122).
+ * NaN -> CBX_EINVAL and the whole space; outside the domain -> CBX_ERANGE
+ * and those axes [-inf, +inf].  Proven: on every axis in the domain, for
+ * every real point p with p.p <= 1, lo_i <= (M p + T)_i <= hi_i (exact reals;
+ * for the ellipsoid M_ij = rot[i][j] * radii[j] exactly): specs/cbx_ball.h. */
+/*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
+    assigns *out;
+    behavior nan_input:
+      assumes aff_nan(a);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior map_input:
+      assumes !aff_nan(a);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: sph_axis(a, out, 0);
+      ensures axis1: sph_axis(a, out, 1);
+      ensures axis2: sph_axis(a, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (sph_row_dom(a, 0) && sph_row_dom(a, 1) && sph_row_dom(a, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out);
+
+/*@ requires valid: \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, center + (0 .. 2), radii + (0 .. 2), rot + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes ell_nan(center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior ellipsoid_input:
+      assumes !ell_nan(center, radii, rot);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: ell_axis(center, radii, rot, out, 0);
+      ensures axis1: ell_axis(center, radii, rot, out, 1);
+      ensures axis2: ell_axis(center, radii, rot, out, 2);
+      ensures ok_iff: \result == CBX_OK <==>
+        (ell_row_dom(center, radii, rot, 0) && ell_row_dom(center, radii, rot, 1)
+         && ell_row_dom(center, radii, rot, 2));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
+                             const cbx_fp rot[3][3], cbx_box *out);

@@ -1,0 +1,111 @@
+/*
+ * The build check: does this build of the library compute the way its
+ * proofs assume?  The proofs (Frama-C/WP's float model) take every C
+ * operation as one IEEE-754 operation rounded to nearest in its own format,
+ * with gradual underflow, infinities, NaN and signed zeros.  A compiler can
+ * break that silently: fused multiply-add contraction (GCC's default outside
+ * ISO modes, -ffp-contract=fast, on targets with FMA: aarch64, x86 with
+ * -mfma), x87 excess precision, -ffast-math and its parts, flush-to-zero
+ * modes set at start-up, or a rounding mode changed with fesetround().
+ *
+ * Each check below runs a known case through the library's own rounding
+ * primitives (cbx_round.h, inlined exactly as in the kernels, in this
+ * translation unit's format) on values the compiler cannot see (volatile),
+ * and compares with the IEEE answer.  Written once, instantiated for
+ * binary64 (this file) and binary32 (cbx_ieee_f.c); cbx_ieee_check() runs
+ * both.  Not part of the proven set: it tests the build, not the algorithm.
+ */
+#include "certbox.h"
+#include "cbx_prec.h"
+#include "cbx_round.h"
+
+#if CBX_INST == 32
+#define cbx_ieee_fmt cbx_ieee_fmt_f
+#endif
+unsigned cbx_ieee_fmt(void);
+
+/* A value the compiler cannot fold. */
+static cbx_fp opaque(cbx_fp x)
+{
+    volatile cbx_fp v = x;
+    return v;
+}
+
+unsigned cbx_ieee_fmt(void)
+{
+    unsigned bad = 0;
+#if CBX_INST == 64
+    const cbx_fp half_eps = 0x1p-30, tiny = 0x1p-60; /* (1+e)(1-e) = 1 - e^2 = 1 - tiny */
+    const cbx_fp big = 0x1p53, tie = 0x1p-53, tie_up = 0x1.8p-53, step = 0x1p-52;
+    const cbx_fp xtra = 0x1p-78;                      /* below the x87 mantissa */
+#else
+    const cbx_fp half_eps = 0x1p-14f, tiny = 0x1p-28f;
+    const cbx_fp big = 0x1p24f, tie = 0x1p-24f, tie_up = 0x1.8p-24f, step = 0x1p-23f;
+    const cbx_fp xtra = 0x1p-47f; /* tie + xtra is a float; evaluating float
+                                     sums in double is exact, so only the
+                                     overflow case below sees excess range */
+#endif
+    const cbx_fp one = opaque(CBX_C(1.0)), zero = opaque(CBX_C(0.0));
+    cbx_fp r;
+
+    /* contraction: RN(RN(a*b) + c) = 0, the fused result is -e^2 */
+    r = cbx_add_rn(cbx_mul_rn(opaque(CBX_C(1.0) + half_eps), opaque(CBX_C(1.0) - half_eps)),
+                   opaque(-CBX_C(1.0)));
+    if (r != CBX_C(0.0)) bad |= CBX_IEEE_CONTRACT;
+    (void)tiny;
+
+    /* excess precision: 1 + (tie + xtra) rounds up to 1 + step in the
+     * format, but to 1 + tie first and then (a tie) to 1 with a wider
+     * intermediate; and max * 2 * 0.5 must overflow */
+    r = cbx_sub_rn(cbx_add_rn(one, opaque(tie + xtra)), opaque(CBX_C(1.0)));
+    if (r != step) bad |= CBX_IEEE_EXCESS;
+    r = cbx_mul_rn(cbx_mul_rn(opaque(CBX_K(FMAX)), opaque(CBX_C(2.0))), opaque(CBX_C(0.5)));
+    if (!(r > CBX_K(FMAX))) bad |= CBX_IEEE_EXCESS;
+
+    /* gradual underflow: the smallest normal halved, and eta + eta */
+    r = cbx_mul_rn(opaque(CBX_K(ETA) * CBX_C(2.0)), opaque(CBX_C(0.5)));
+    if (r != CBX_K(ETA)) bad |= CBX_IEEE_FTZ;
+#if CBX_INST == 64
+    r = cbx_mul_rn(opaque(0x1p-1022), opaque(CBX_C(0.5)));
+    if (!(r > CBX_C(0.0))) bad |= CBX_IEEE_FTZ;
+#else
+    r = cbx_mul_rn(opaque(0x1p-126f), opaque(CBX_C(0.5)));
+    if (!(r > CBX_C(0.0))) bad |= CBX_IEEE_FTZ;
+#endif
+    r = cbx_add_rn(opaque(CBX_K(ETA)), opaque(CBX_K(ETA)));
+    if (r != CBX_K(ETA2)) bad |= CBX_IEEE_FTZ;
+
+    /* round to nearest: 1 + 1.5 ulp/2 rounds up (not toward zero or down),
+     * 1 + ulp/4 rounds down (not up), and -1 - 1.5 ulp/2 away from zero */
+    r = cbx_sub_rn(cbx_add_rn(one, opaque(tie_up)), opaque(CBX_C(1.0)));
+    if (r != step) bad |= CBX_IEEE_ROUNDING;
+    r = cbx_sub_rn(cbx_add_rn(one, opaque(tie * CBX_C(0.5))), opaque(CBX_C(1.0)));
+    if (r != CBX_C(0.0)) bad |= CBX_IEEE_ROUNDING;
+    r = cbx_add_rn(cbx_sub_rn(opaque(-CBX_C(1.0)), opaque(tie_up)), opaque(CBX_C(1.0)));
+    if (r != -step) bad |= CBX_IEEE_ROUNDING;
+
+    /* special values: NaN unequal to itself, infinity beyond the largest
+     * finite value, -0 + -0 = -0 with its sign */
+    r = cbx_mul_rn(opaque(CBX_HUGE), zero);
+    if (r == r) bad |= CBX_IEEE_SPECIAL;
+    r = opaque(-CBX_HUGE);
+    if (!(r < -CBX_K(FMAX))) bad |= CBX_IEEE_SPECIAL;
+    r = cbx_add_rn(opaque(-CBX_C(0.0)), opaque(-CBX_C(0.0)));
+    if (r != CBX_C(0.0) || CBX_C(1.0) / r > CBX_C(0.0)) bad |= CBX_IEEE_SPECIAL;
+
+    /* no reassociation: (b + 1) - b is 0 for b = 2^p, not 1 (the same
+     * value b twice: what a reassociating compiler would simplify) */
+    r = opaque(big);
+    r = cbx_sub_rn(cbx_add_rn(r, one), r);
+    if (r != CBX_C(0.0)) bad |= CBX_IEEE_ASSOC;
+    return bad;
+}
+
+#if CBX_INST == 64
+unsigned cbx_ieee_fmt_f(void);
+
+unsigned cbx_ieee_check(void)
+{
+    return cbx_ieee_fmt() | cbx_ieee_fmt_f();
+}
+#endif
