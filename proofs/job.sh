@@ -45,38 +45,47 @@ KERNELS64=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx
 # The binary64 public functions and their helpers that are not kernels,
 # in two halves of similar proof time (B64a: tight mode, classes, motion).
 B64A=cbx_transform_box_tight,cbx_classify,cbx_transform_box_as,kern_identity,kern_translate,kern_sparse,fast_identity,fast_translate,fast_sparse,ends_ok,tr_ok,lin_ok,axis_full,full_row,cbx_motion_box,mot_union,mot_axis_union,one_box,one_box_as,step,put_box,severity,cbx_transform_boxes
+# TU: the translation unit; OPTS: its options; SEL: the goals it proves
 case $name in
-  L64) set -- proofs/lemmas.c $WP ;;
-  L32) set -- proofs/lemmas_f.c $WP ;;
-  A64) set -- proofs/all.c $WP -wp-split -wp-fct $KERNELS64 ;;
-  A32) set -- proofs/all_f.c $WP -wp-split -wp-fct $KERNELS32 ;;
-  B64a) set -- proofs/all.c $WP -wp-fct $B64A ;;
-  B64b) set -- proofs/all.c $WP -wp-skip-fct $KERNELS64,$B64A ;;
-  B32) set -- proofs/all_f.c $WP -wp-skip-fct $KERNELS32 ;;
-  S64) set -- proofs/all.c $SMOKE $NOGOALS ;;
-  S32) set -- proofs/all_f.c $SMOKE $NOGOALS ;;
+  L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
+  L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
+  A64) TU=proofs/all.c; OPTS="$WP -wp-split"; SEL="-wp-fct $KERNELS64" ;;
+  A32) TU=proofs/all_f.c; OPTS="$WP -wp-split"; SEL="-wp-fct $KERNELS32" ;;
+  B64a) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $B64A" ;;
+  B64b) TU=proofs/all.c; OPTS=$WP; SEL="-wp-skip-fct $KERNELS64,$B64A" ;;
+  B32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-skip-fct $KERNELS32" ;;
+  S64) TU=proofs/all.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;
+  S32) TU=proofs/all_f.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;
   *) echo "job.sh: unknown job $name" >&2; exit 2 ;;
 esac
 start=$(date +%s)
 case $name in
   S*)
     # shellcheck disable=SC2086
-    $FC "$@" > $out/wp-$name.log 2>&1 || true ;;
+    $FC $TU $OPTS $SEL > $out/wp-$name.log 2>&1 || true ;;
   *)
     # Two passes.  1: CVC4 alone, a short timeout: it proves most goals in
     # well under a second.  2: both provers raced with the full timeout, on
-    # what is left: a goal pass 1 proved is read back from the cache of
-    # this job (WP's cache keeps valid results only; it starts empty and is
-    # used by nothing else), so every result comes from a prover of this
-    # run.  Racing both provers on every goal cost twice the CPU.
+    # the functions where pass 1 left a goal unproved (every goal of those
+    # functions is regenerated; the ones pass 1 proved are read back from
+    # this job's cache, which starts empty and serves nothing else, so every
+    # result still comes from a prover of this run).  The job's log is pass
+    # 1's followed by pass 2's; proofs/report.py takes each goal's last
+    # result.  Racing both provers on every goal cost twice the CPU, and a
+    # second pass over every goal regenerated every task.
     cache=$out/cache-$name
     rm -rf "$cache"; mkdir -p "$cache"
     # shellcheck disable=SC2086
-    $FC "$@" -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-2} -wp-cache update -wp-cache-dir "$cache" \
-      > $out/wp-$name.pass1.log 2>&1 || true
-    # shellcheck disable=SC2086
-    $FC "$@" -wp-prover cvc4r$fam,z3r$fam -wp-timeout ${CBX_WP_TIMEOUT:-120} -wp-cache update -wp-cache-dir "$cache" \
-      > $out/wp-$name.log 2>&1 || true
+    $FC $TU $OPTS $SEL -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-2} -wp-cache update \
+      -wp-cache-dir "$cache" > $out/wp-$name.log 2>&1 || true
+    again=$(python3 proofs/report.py --unproved-functions $out/wp-$name.log)
+    if [ -n "$again" ]; then
+      echo "proof: job $name: pass 2 on $again"
+      [ "$again" = ALL ] || SEL="-wp-fct $again"
+      # shellcheck disable=SC2086
+      $FC $TU $OPTS $SEL -wp-prover cvc4r$fam,z3r$fam -wp-timeout ${CBX_WP_TIMEOUT:-120} \
+        -wp-cache update -wp-cache-dir "$cache" >> $out/wp-$name.log 2>&1 || true
+    fi
     rm -rf "$cache" ;;
 esac
 end=$(date +%s)

@@ -26,7 +26,9 @@ run() { # name expect mode
 run "library as built" 0 plain
 grep probe $B/out.txt | sed 's/^test_ieee: /ieee: /' || true
 case $(uname -m) in
-  x86_64|i?86) run "flush-to-zero and denormals-are-zero set at run time" 0x04 ftz ;;
+  x86_64|i?86) run "flush-to-zero and denormals-are-zero set at run time" 0x04 ftz
+               run "flush-to-zero alone" 0x04 ftzonly
+               run "denormals-are-zero alone" 0x04 daz ;;
 esac
 run "rounding upward" 0x08 up
 run "rounding downward" 0x08 down

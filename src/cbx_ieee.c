@@ -62,18 +62,22 @@ unsigned cbx_ieee_fmt(void)
     r = cbx_mul_rn(cbx_mul_rn(opaque(CBX_K(FMAX)), opaque(CBX_C(2.0))), opaque(CBX_C(0.5)));
     if (!(r > CBX_K(FMAX))) bad |= CBX_IEEE_EXCESS;
 
-    /* gradual underflow: the smallest normal halved, and eta + eta */
-    r = cbx_mul_rn(opaque(CBX_K(ETA) * CBX_C(2.0)), opaque(CBX_C(0.5)));
-    if (r != CBX_K(ETA)) bad |= CBX_IEEE_FTZ;
+    /* gradual underflow.  Flush-to-zero (results) and denormals-are-zero
+     * (inputs, comparisons included: a subnormal compares equal to 0 under
+     * DAZ) are told apart by scaling every subnormal up to a normal number
+     * before it is compared: the smallest normal halved must stay > 0
+     * (FTZ); eta read as an input and scaled by 2^100 must give
+     * eta * 2^100 (DAZ); eta + eta, scaled, must give 2 eta * 2^100 (both). */
 #if CBX_INST == 64
     r = cbx_mul_rn(opaque(0x1p-1022), opaque(CBX_C(0.5)));
-    if (!(r > CBX_C(0.0))) bad |= CBX_IEEE_FTZ;
 #else
     r = cbx_mul_rn(opaque(0x1p-126f), opaque(CBX_C(0.5)));
-    if (!(r > CBX_C(0.0))) bad |= CBX_IEEE_FTZ;
 #endif
-    r = cbx_add_rn(opaque(CBX_K(ETA)), opaque(CBX_K(ETA)));
-    if (r != CBX_K(ETA2)) bad |= CBX_IEEE_FTZ;
+    if (!(r > CBX_C(0.0))) bad |= CBX_IEEE_FTZ;
+    r = cbx_mul_rn(opaque(CBX_K(ETA)), opaque(CBX_C(0x1p100)));
+    if (r != CBX_K(ETA) * CBX_C(0x1p100)) bad |= CBX_IEEE_FTZ;
+    r = cbx_mul_rn(cbx_add_rn(opaque(CBX_K(ETA)), opaque(CBX_K(ETA))), opaque(CBX_C(0x1p100)));
+    if (r != CBX_K(ETA2) * CBX_C(0x1p100)) bad |= CBX_IEEE_FTZ;
 
     /* round to nearest: 1 + 1.5 ulp/2 rounds up (not toward zero or down),
      * 1 + ulp/4 rounds down (not up), and -1 - 1.5 ulp/2 away from zero */

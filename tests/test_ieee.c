@@ -2,6 +2,7 @@
  * test_ieee [mode] [expect]: the build check, cbx_ieee_check(), and its teeth.
  *   mode   plain (default): call it as the library was built;
  *          ftz: set the x86 flush-to-zero and denormals-are-zero modes first;
+ *          ftzonly, daz: set only one of them (each must be caught alone);
  *          up, down, zero: set that rounding mode first (fesetround)
  *   expect the bits that must be set (default 0: no bit may be set; with
  *          a nonzero expectation other bits may be set too, since one
@@ -64,9 +65,10 @@ int main(int argc, char **argv)
     const char *mode = argc > 1 ? argv[1] : "plain";
     unsigned expect = argc > 2 ? (unsigned)strtoul(argv[2], 0, 0) : 0u, got;
     int ok;
-    if (!strcmp(mode, "ftz")) {
+    if (!strcmp(mode, "ftz") || !strcmp(mode, "ftzonly") || !strcmp(mode, "daz")) {
 #ifdef HAVE_MXCSR
-        _mm_setcsr(_mm_getcsr() | 0x8040u); /* FTZ (bit 15) and DAZ (bit 6) */
+        /* FTZ is MXCSR bit 15 (0x8000), DAZ bit 6 (0x0040) */
+        _mm_setcsr(_mm_getcsr() | (!strcmp(mode, "ftz") ? 0x8040u : !strcmp(mode, "daz") ? 0x0040u : 0x8000u));
 #else
         printf("test_ieee: ftz mode needs x86 SSE; skipped\n0 passed, 0 failed\n");
         return 0;
@@ -78,7 +80,7 @@ int main(int argc, char **argv)
     } else if (!strcmp(mode, "zero")) {
         fesetround(FE_TOWARDZERO);
     } else if (strcmp(mode, "plain")) {
-        fprintf(stderr, "usage: test_ieee [plain|ftz|up|down|zero] [expected bits]\n");
+        fprintf(stderr, "usage: test_ieee [plain|ftz|ftzonly|daz|up|down|zero] [expected bits]\n");
         return 2;
     }
     got = cbx_ieee_check();
