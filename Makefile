@@ -193,7 +193,7 @@ check: check-deps
 	$(MAKE) proof-check
 	$(MAKE) smoke-teeth
 	$(MAKE) evidence-check
-	@echo "check: 13 passed, 0 failed"
+	@echo "check: 13 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check), 0 failed"
 
 # make install into a scratch DESTDIR, then build a program against it
 # with pkg-config, static and shared.

@@ -1292,13 +1292,13 @@ static void xu_perturb_half(xu_rng *r, cbx_affine *a, cbx_box *b)
     }
 }
 
-static void xu_inject_nan(xu_rng *r, cbx_affine *a, cbx_box *b)
+void xu_inject_nan(xu_rng *r, cbx_affine *a, double v0[3], double v1[3])
 {
     int p = xu_rng_int(r, 0, 17);
     double nan = xu_rng_sign(r) * NAN;
     if (p < 12) a->m[p / 4][p % 4] = nan;
-    else if (p < 15) b->lo[p - 12] = nan;
-    else b->hi[p - 15] = nan;
+    else if (p < 15) v0[p - 12] = nan;
+    else v1[p - 15] = nan;
 }
 
 static void xu_inject_empty(xu_rng *r, cbx_box *b)
@@ -1334,10 +1334,10 @@ void xu_gen_case(xu_rng *r, cbx_affine *a, cbx_box *b)
     int p = xu_rng_int(r, 0, 999);
     xu_gen_in_domain(r, a, b);
     if (p < 100) xu_perturb_out(r, a, b);
-    else if (p < 115) xu_inject_nan(r, a, b);
+    else if (p < 115) xu_inject_nan(r, a, b->lo, b->hi);
     else if (p < 130) {
         xu_inject_empty(r, b);
-        if (p < 118) xu_inject_nan(r, a, b);
+        if (p < 118) xu_inject_nan(r, a, b->lo, b->hi);
     } else if (p < 180) {
         xu_perturb_half(r, a, b);
         if (p < 140) xu_perturb_out(r, a, b);

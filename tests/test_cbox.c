@@ -1231,15 +1231,6 @@ static void perturb_tc(xu_rng *r, cbx_affine *a, cbx_cbox *b)
     }
 }
 
-static void inject_nan_tc(xu_rng *r, cbx_affine *a, cbx_cbox *b)
-{
-    int p = xu_rng_int(r, 0, 17);
-    double nan = xu_rng_sign(r) * NAN;
-    if (p < 12) a->m[p / 4][p % 4] = nan;
-    else if (p < 15) b->c[p - 12] = nan;
-    else b->h[p - 15] = nan;
-}
-
 static void inject_neg_h(xu_rng *r, cbx_cbox *b)
 {
     int j = xu_rng_int(r, 0, 2);
@@ -1258,10 +1249,10 @@ static void gen_tc_case(xu_rng *r, cbx_affine *a, cbx_cbox *b)
     int p = xu_rng_int(r, 0, 999);
     gen_tc_in_domain(r, a, b);
     if (p < 100) perturb_tc(r, a, b);
-    else if (p < 115) inject_nan_tc(r, a, b);
+    else if (p < 115) xu_inject_nan(r, a, b->c, b->h);
     else if (p < 130) {
         inject_neg_h(r, b);
-        if (p < 118) inject_nan_tc(r, a, b);
+        if (p < 118) xu_inject_nan(r, a, b->c, b->h);
     }
 }
 
