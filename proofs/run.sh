@@ -19,7 +19,9 @@ cd "$root"
 check=0; [ "${1:-}" = --check ] && check=1
 out=build/proof
 mkdir -p $out
-rm -f $out/wp-*.log $out/wp-*.time
+rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256
+# the inputs as they are when the run starts (make evidence checks them)
+inputs=$(sh proofs/inputs.sh)
 conf=$(sh proofs/setup.sh $out)
 export WHY3CONFIG="$conf"
 NPROC=$(nproc 2>/dev/null || echo 2)
@@ -33,6 +35,7 @@ start=$(date +%s)
 echo $LIST | tr ' ' '\n' | xargs -P "$JOBS" -n 1 sh proofs/job.sh || true
 end=$(date +%s)
 python3 proofs/report.py $out $((end - start)) > proofs/report.md.new
+echo "$inputs" > $out/inputs.sha256
 mv proofs/report.md.new proofs/report.md
 tail -n 4 proofs/report.md
 if [ $check = 1 ]; then

@@ -13,7 +13,9 @@ Sections:
             fails on a clause without plain words or a stale entry
   proof     goals per function and family (proved / total, provers), the
             trusted base (proofs/README.md), the smoke tests; from the logs
-            of the last proof run (build/proof, make proof-check)
+            of the last proof run (build/proof, make proof-check), which
+            must have proved these very sources (proofs/inputs.sh; make
+            evidence runs the proofs first when it did not)
   tests     every exact suite run (the sizes of make test), its cases,
             failures, containment checks and failures, tightness figures
   coverage  statement and branch coverage of src/ by those suites (gcovr),
@@ -162,6 +164,14 @@ def proof(raw):
     if not glob.glob(os.path.join(d, 'wp-*.log')):
         failures.append('proof: no proof logs in build/proof (run make proof first)')
         return {}, {}
+    import subprocess
+    digest = subprocess.run(['sh', os.path.join(ROOT, 'proofs', 'inputs.sh')], capture_output=True,
+                            text=True, check=True).stdout.strip()
+    stamp = os.path.join(d, 'inputs.sha256')
+    ran_on = open(stamp).read().strip() if os.path.exists(stamp) else None
+    if ran_on != digest:
+        failures.append('proof: the logs in build/proof are not from a run on these sources '
+                        '(proofs/inputs.sh: %s, the run: %s); run make proof' % (digest, ran_on))
     data = report.collect(d)
     os.makedirs(os.path.join(raw, 'proof'), exist_ok=True)
     for f in glob.glob(os.path.join(d, 'wp-*.log')):
@@ -173,6 +183,7 @@ def proof(raw):
               'smoke_tests': data['smoke'], 'smoke_failed': len(data['bad_smoke']),
               'unproved': data['failed'], 'errors': data['errors'], 'unfinished': data['unfinished'],
               'result': 'PROVED' if data['ok'] else 'NOT PROVED',
+              'inputs_sha256': digest,
               'model': 'Frama-C/WP default float model (IEEE, round to nearest), Typed memory, -wp-rte, every goal proved by a prover in this run (each job\'s WP cache starts empty and is deleted after it)'}
     volatile = {'provers': {}, 'wall_seconds_per_job': data['job_time']}
     for fam, per in data['per'].items():
@@ -469,7 +480,9 @@ def md(pack):
     L += ['## 2. Proof', '', 'Model: %s. Result: **%s**: %d / %d goals proved; %d smoke tests, %d failed '
           '(a failed smoke test would mean an inconsistent contract).' % (
               p.get('model', ''), p.get('result', 'none'), p.get('proved', 0), p.get('total', 0),
-              p.get('smoke_tests', 0), p.get('smoke_failed', 0)), '']
+              p.get('smoke_tests', 0), p.get('smoke_failed', 0)), '',
+          'The run proved these inputs (SHA-256 of the sources, specifications and proof scripts, '
+          '`sh proofs/inputs.sh`): `%s`.' % p.get('inputs_sha256', 'none'), '']
     for fam, per in p.get('families', {}).items():
         L += ['%s: %d functions, %d / %d goals.' % (fam, len(per), sum(v['proved'] for v in per.values()),
                                                   sum(v['total'] for v in per.values())), '',
