@@ -32,6 +32,10 @@ LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.
 HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
+# each *_f.c is a stub that #includes its binary64 source: rebuild it when
+# that source changes
+FAMSRC  := $(patsubst src/%_f.c,%,$(filter %_f.c,$(LIBSRC)))
+$(foreach f,$(FAMSRC),$(eval $(B)/obj/$(f)_f.o $(B)/pic/$(f)_f.o: src/$(f).c))
 SONAME  := libcertbox.so.$(SOVERSION)
 
 .PHONY: fuzz fuzz-check mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check

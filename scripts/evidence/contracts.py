@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""The public contracts of certbox, read from the headers (src/cbx_api.h for
+both families, src/certbox.h for the binary64-only functions), split into
+clauses.  Used by scripts/evidence.py; run alone it lists every clause key.
+
+A clause key is BEHAVIOR/KIND/LABEL: the behavior ('-' outside any), the
+clause kind (requires, assigns, assumes, ensures, complete, disjoint) and its
+label (its ACSL name, or its position among the unnamed clauses of that kind
+in that behavior: 1, 2, ...)."""
+import os
+import re
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def macro(name):
+    """The body of a contract macro of specs/cbx_class.h (CBX_BOX_BEHAVIORS)."""
+    text = open(os.path.join(ROOT, 'specs', 'cbx_class.h'), encoding='utf-8').read()
+    m = re.search(r'#define %s\(([^)]*)\)\s*\\\n(.*?)(?<!\\)\n' % name, text, re.S)
+    params = [p.strip() for p in m.group(1).split(',')]
+    body = re.sub(r'\\\n', '\n', m.group(2))
+    return params, body
+
+
+def expand(contract):
+    """Expand CBX_BOX_BEHAVIORS(a, in, out) (the one contract macro used)."""
+    def rep(m):
+        params, body = macro('CBX_BOX_BEHAVIORS')
+        args = [a.strip() for a in m.group(1).split(',')]
+        for p, a in zip(params, args):
+            body = re.sub(r'\b%s\b' % re.escape(p), a, body)
+        return body
+    return re.sub(r'CBX_BOX_BEHAVIORS\(([^)]*)\)', rep, contract)
+
+
+def functions():
+    """[(name, family, doc comment, contract text, prototype)]"""
+    out = []
+    for fname, fam in (('cbx_api.h', 'both'), ('certbox.h', '64')):
+        text = open(os.path.join(ROOT, 'src', fname), encoding='utf-8').read()
+        for m in re.finditer(r'((?:/\*(?!@)(?:[^*]|\*(?!/))*\*/\s*)*)/\*@(.*?)\*/\s*\n'
+                             r'((?:cbx_status|cbx_class|unsigned|const char \*)\s+(cbx_\w+)\((?:[^;])*\);)',
+                             text, re.S):
+            doc = m.group(1).strip()
+            docs = re.findall(r'/\*(?:[^*]|\*(?!/))*\*/', doc)
+            doc = docs[-1] if docs else ''
+            doc = re.sub(r'^/\*\s?|\s*\*/$', '', doc)
+            doc = '\n'.join(re.sub(r'^\s*\* ?', '', l) for l in doc.splitlines()).strip()
+            out.append((m.group(4), fam, doc, expand(m.group(2)), ' '.join(m.group(3).split())))
+    return out
+
+
+def clauses(contract):
+    """[(key, kind, text)] in order."""
+    text = re.sub(r'//[^\n]*', '', contract)
+    out = []
+    bhv = '-'
+    count = {}
+    pieces = []
+    for raw in text.split(';'):
+        # a quantifier's binder (\forall integer k;) ends in ';' too
+        if pieces and re.search(r'\\(forall|exists)\s+[\w\s,]*$', pieces[-1]):
+            pieces[-1] += ';' + raw
+        else:
+            pieces.append(raw)
+    for raw in pieces:
+        c = ' '.join(raw.split())
+        if not c:
+            continue
+        m = re.match(r'behavior (\w+):\s*(.*)$', c)
+        if m:
+            bhv = m.group(1)
+            c = m.group(2)
+            if not c:
+                continue
+        kind = c.split()[0]
+        if kind == 'complete' or kind == 'disjoint':
+            out.append(('-/%s/behaviors' % kind, kind, c))
+            continue
+        body = c[len(kind):].strip()
+        m = re.match(r'(\w+)\s*:(?!:)\s*(.*)$', body)
+        if m and kind in ('requires', 'ensures', 'assumes'):
+            label, body = m.group(1), m.group(2)
+        else:
+            n = count.get((bhv, kind), 0) + 1
+            count[(bhv, kind)] = n
+            label = str(n)
+        out.append(('%s/%s/%s' % (bhv, kind, label), kind, '%s %s;' % (kind, body) if kind != 'assigns' else c + ';'))
+    return out
+
+
+if __name__ == '__main__':
+    for name, fam, doc, contract, proto in functions():
+        print('[%s] (%s) %s' % (name, fam, proto))
+        for key, kind, text in clauses(contract):
+            print('  %-28s %s' % (key, text[:90]))
+    sys.exit(0)
