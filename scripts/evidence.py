@@ -274,7 +274,7 @@ def coverage(raw, b):
             failures.append('coverage: test_%s at -O0 --coverage printed something else than at -O2' % run_name(i))
     r = sh(['gcovr', '--root', ROOT, '--object-directory', os.path.join(b, 'obj'),
             '--filter', os.path.join(ROOT, 'src') + '/', '--exclude', os.path.join(ROOT, 'src', 'scene') + '/',
-            '--json', os.path.join(raw, 'coverage.json'), b], check=True)
+            '--json', os.path.join(raw, 'coverage.json'), os.path.join(b, 'obj')], check=True)
     data = json.load(open(os.path.join(raw, 'coverage.json')))
     waivers = load_waivers()
     used = set()
