@@ -194,15 +194,17 @@ check-deps-proof:
 # Each step stops the run on failure; the last line counts the steps.
 # Independent steps run two at a time (each is single-threaded; the proofs
 # and the smoke teeth use both cores on their own).
+# Each step's time is printed (check: NAME: N s).
+TIMED = sh scripts/timed.sh
 check: check-deps
-	$(MAKE) -j2 all $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
-	$(MAKE) header-check
-	$(MAKE) -j2 test test-san
-	$(MAKE) -j2 ieee-check bench-smoke install-check embedded
-	$(MAKE) -j2 fuzz-check check-cross
-	$(MAKE) proof-check
-	$(MAKE) smoke-teeth
-	$(MAKE) evidence-check
+	$(TIMED) build $(MAKE) -j2 all $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
+	$(TIMED) header-check $(MAKE) header-check
+	$(TIMED) test+test-san $(MAKE) -j2 test test-san
+	$(TIMED) ieee-check+bench-smoke+install-check+embedded $(MAKE) -j2 ieee-check bench-smoke install-check embedded
+	$(TIMED) fuzz-check+check-cross $(MAKE) -j2 fuzz-check check-cross
+	$(TIMED) proof-check $(MAKE) proof-check
+	$(TIMED) smoke-teeth $(MAKE) smoke-teeth
+	$(TIMED) evidence-check $(MAKE) evidence-check
 	@echo "check: 13 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check), 0 failed"
 
 # make install into a scratch DESTDIR, then build a program against it

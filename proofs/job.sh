@@ -64,8 +64,11 @@ case $name in
     # shellcheck disable=SC2086
     $FC $TU $OPTS $SEL > $out/wp-$name.log 2>&1 || true ;;
   *)
-    # Two passes.  1: CVC4 alone, a short timeout: it proves most goals in
-    # well under a second.  2: both provers raced with the full timeout, on
+    # Two passes.  1: CVC4 alone, CBX_WP_TIMEOUT1 (10 s): it proves most
+    # goals in well under a second and nearly all the rest within 10 s (the
+    # big behaviors' postconditions take 2-9 s; at 2 s they all fell to pass
+    # 2, which regenerated their functions' every goal: about 4 minutes of
+    # a run).  2: both provers raced with the full timeout, on
     # the functions where pass 1 left a goal unproved (every goal of those
     # functions is regenerated; the ones pass 1 proved are read back from
     # this job's cache, which starts empty and serves nothing else, so every
@@ -76,7 +79,7 @@ case $name in
     cache=$out/cache-$name
     rm -rf "$cache"; mkdir -p "$cache"
     # shellcheck disable=SC2086
-    $FC $TU $OPTS $SEL -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-2} -wp-cache update \
+    $FC $TU $OPTS $SEL -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-10} -wp-cache update \
       -wp-cache-dir "$cache" > $out/wp-$name.log 2>&1 || true
     again=$(python3 proofs/report.py --unproved-functions $out/wp-$name.log)
     if [ -n "$again" ]; then
