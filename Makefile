@@ -164,7 +164,7 @@ proof-check: check-deps-proof
 .PHONY: evidence evidence-check
 # Both reuse the logs of the last proof run only if it proved these very
 # sources (proofs/inputs.sh); otherwise they run the proofs first (a fresh
-# clone: about 30 minutes on 2 cores).
+# clone: about 20 minutes on 2 cores).
 PROOF_CURRENT = @sh proofs/inputs.sh --check || { echo "evidence: no proof run of these sources in $(B)/proof: running the proofs first"; $(MAKE) proof; }
 evidence: all
 	@sh scripts/deps.sh evidence
