@@ -67,8 +67,8 @@ case $name in
     # Two passes.  1: CVC4 alone, CBX_WP_TIMEOUT1 (10 s): it proves most
     # goals in well under a second and nearly all the rest within 10 s (the
     # big behaviors' postconditions take 2-9 s; at 2 s they all fell to pass
-    # 2, which regenerated their functions' every goal: about 4 minutes of
-    # a run).  2: both provers raced with the full timeout, on
+    # 2, which regenerated every goal of their functions).  2: both provers
+    # raced with the full timeout, on
     # the functions where pass 1 left a goal unproved (every goal of those
     # functions is regenerated; the ones pass 1 proved are read back from
     # this job's cache, which starts empty and serves nothing else, so every

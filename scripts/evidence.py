@@ -164,9 +164,7 @@ def proof(raw):
     if not glob.glob(os.path.join(d, 'wp-*.log')):
         failures.append('proof: no proof logs in build/proof (run make proof first)')
         return {}, {}
-    import subprocess
-    digest = subprocess.run(['sh', os.path.join(ROOT, 'proofs', 'inputs.sh')], capture_output=True,
-                            text=True, check=True).stdout.strip()
+    digest = sh(['sh', 'proofs/inputs.sh']).stdout.strip()
     stamp = os.path.join(d, 'inputs.sha256')
     ran_on = open(stamp).read().strip() if os.path.exists(stamp) else None
     if ran_on != digest:

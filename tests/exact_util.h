@@ -363,8 +363,6 @@ typedef struct xu_rng { uint64_t s; } xu_rng;
 uint64_t xu_rng_next(xu_rng *r);
 int xu_rng_int(xu_rng *r, int lo, int hi);          /* uniform in [lo, hi] */
 double xu_rng_sign(xu_rng *r);                      /* -1.0 or 1.0         */
-/* a signed NaN in one of the 18 numbers: a's 12 entries, v0[0..2], v1[0..2] */
-void xu_inject_nan(xu_rng *r, cbx_affine *a, double v0[3], double v1[3]);
 double xu_rng_unit(xu_rng *r);                      /* [0, 1), 53 bits     */
 /* |v| in [0, 2^emax]: 4% zero, 4% exactly 2^emax, some subnormals (when
  * emin <= -1022), otherwise a full mantissa with exponent in [emin, emax). */
@@ -375,6 +373,9 @@ double xu_gen_signed(xu_rng *r, int emin, int emax); /* with -0.0 */
  * exponents, cancelling translations), ~10% pushed out of it, ~5%
  * half-spaces, ~1.5% NaN, ~1.5% empty.  The draws of test_exact. */
 void xu_gen_case(xu_rng *r, cbx_affine *a, cbx_box *b);
+/* A signed NaN in one of the 18 numbers: a's 12 entries, v0[0..2], v1[0..2]
+ * (a box's lo and hi, or a cbox's c and h); the NaN draws of xu_gen_case. */
+void xu_inject_nan(xu_rng *r, cbx_affine *a, double v0[3], double v1[3]);
 /* A uniformly random rotation: a unit quaternion drawn by rejection from
  * [-1, 1)^4 (four xu_rng_unit draws per try), then its rotation matrix. */
 void xu_rand_rotation(xu_rng *r, double R[3][3]);
