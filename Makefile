@@ -29,7 +29,7 @@ B := build
 LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c \
            src/cbx_interval_f.c src/cbx_center_f.c src/cbx_convert_f.c src/cbx_sphere_f.c src/cbx_batch_f.c \
            src/cbx_ieee.c src/cbx_ieee_f.c
-HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
@@ -200,12 +200,12 @@ check: check-deps
 	$(TIMED) build $(MAKE) -j2 all $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
 	$(TIMED) header-check $(MAKE) header-check
 	$(TIMED) test+test-san $(MAKE) -j2 test test-san
-	$(TIMED) ieee-check+bench-smoke+install-check+embedded $(MAKE) -j2 ieee-check bench-smoke install-check embedded
+	$(TIMED) ieee-check+bench-smoke+install-check+embedded+branchfree $(MAKE) -j2 ieee-check bench-smoke install-check embedded branchfree
 	$(TIMED) fuzz-check+check-cross $(MAKE) -j2 fuzz-check check-cross
 	$(TIMED) proof-check $(MAKE) proof-check
 	$(TIMED) smoke-teeth $(MAKE) smoke-teeth
 	$(TIMED) evidence-check $(MAKE) evidence-check
-	@echo "check: 13 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check), 0 failed"
+	@echo "check: 14 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, branchfree, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check), 0 failed"
 
 # make install into a scratch DESTDIR, then build a program against it
 # with pkg-config, static and shared.
@@ -252,27 +252,57 @@ clean:
 	rm -rf $(B)
 
 # ---- benchmark (issue 5) ---------------------------------------------------
-# make bench        the table (build/bench-out/bench.md, bench.dat, bench.png)
-# make bench-smoke  the same table on tiny sizes (about a second; a step of
-#                   make check: fails on a containment failure in a certbox
-#                   row or a batch output not bit-identical); no plot
-#                   unless gnuplot is already installed
-# tests/bench.c and the baselines of tests/bench_ref.h are built with the
-# library's flags (ALLCFLAGS: -std=c99 -ffp-contract=off -fno-fast-math -O2).
+# make bench        the tables (build/bench-out/bench.md, bench.dat, bench.png)
+# make bench-smoke  the same tables on tiny sizes (a few seconds per build; a
+#                   step of make check: fails on a containment failure in a
+#                   certbox row, a prepared or batch output not bit-identical
+#                   to cbx_transform_box(f)'s, or a certbox output that differs
+#                   between the two builds); no plot unless gnuplot is already
+#                   installed
+# Two builds of tests/bench.c, each against the library compiled with the
+# same flags, run one after the other and merged by scripts/bench_table.py
+# into one table, one column group per build:
+#   build/bench         the library's flags (ALLCFLAGS: -std=c99 -ffp-contract=off
+#                       -fno-fast-math -O2), build/libcertbox.a
+#   build/bench-native  the same with -O3 -march=native (BENCHNATIVE), against
+#                       build/native/libcertbox.a (objects in build/native/obj)
 BENCHARGS      := -n 20000 -r 11 -calls 200000 -exact 20000 -gmp 2000 -cache 1000 -big 4000000
-BENCHSMOKEARGS := -n 2000 -r 5 -calls 20000 -exact 2000 -gmp 200 -cache 1000 -big 100000
-.PHONY: bench bench-smoke
-$(B)/bench: tests/bench.c tests/bench_ref.h $(TESTUTIL) tests/exact_util.h $(B)/libcertbox.a
+BENCHSMOKEARGS := -n 2000 -r 11 -calls 10000 -exact 2000 -gmp 200 -cache 500 -big 50000
+BENCHNATIVE    := -O3 -march=native
+NATIVECFLAGS   := -std=c99 $(WARN) $(IEEEFLAGS) $(BENCHNATIVE) -Isrc
+NATIVEOBJ      := $(LIBSRC:src/%.c=$(B)/native/obj/%.o)
+BENCHSRC       := tests/bench.c tests/bench_ref.h $(TESTUTIL) tests/exact_util.h
+.PHONY: bench bench-smoke branchfree
+$(foreach f,$(FAMSRC),$(eval $(B)/native/obj/$(f)_f.o: src/$(f).c))
+$(B)/native/obj/%.o: src/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) $(NATIVECFLAGS) -c $< -o $@
+$(B)/native/libcertbox.a: $(NATIVEOBJ)
+	rm -f $@ && ar rcs $@ $^
+$(B)/bench: $(BENCHSRC) $(B)/libcertbox.a
 	$(CC) $(ALLCFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(ALLCFLAGS)"' \
-	  tests/bench.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+	  -DBENCH_LABEL='"$(strip $(CFLAGS))"' tests/bench.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+$(B)/bench-native: $(BENCHSRC) $(B)/native/libcertbox.a
+	$(CC) $(NATIVECFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(NATIVECFLAGS)"' \
+	  -DBENCH_LABEL='"$(BENCHNATIVE)"' tests/bench.c $(TESTUTIL) $(B)/native/libcertbox.a -lmpfr -lgmp -lm -o $@
+
+# BENCH_RUN(dir, args): both builds, one after the other, then the merged table
+BENCH_RUN = ./$(B)/bench $(2) -o $(1)/O2 && ./$(B)/bench-native $(2) -o $(1)/native && \
+	python3 scripts/bench_table.py $(1) $(1)/O2 $(1)/native
 
 bench: check-deps-test
 	@sh scripts/deps.sh bench || echo "bench: note: gnuplot could not be installed; the plot will be skipped"
-	$(MAKE) $(B)/bench
-	./$(B)/bench $(BENCHARGS) -o $(B)/bench-out
+	$(MAKE) $(B)/bench $(B)/bench-native
+	$(call BENCH_RUN,$(B)/bench-out,$(BENCHARGS))
 	@sh scripts/bench_plot.sh $(B)/bench-out
 
 bench-smoke: check-deps-test
-	$(MAKE) $(B)/bench
-	./$(B)/bench $(BENCHSMOKEARGS) -o $(B)/bench-smoke
+	$(MAKE) $(B)/bench $(B)/bench-native
+	$(call BENCH_RUN,$(B)/bench-smoke,$(BENCHSMOKEARGS))
 	@sh scripts/bench_plot.sh $(B)/bench-smoke
+
+# The fast path is branch-free: cbx_fast_box (src/cbx_fast.h), both formats,
+# compiled with the library's flags at -O2 into two wrappers, disassembled;
+# fails on any conditional branch or call in them (scripts/branchfree.sh).
+branchfree:
+	sh scripts/branchfree.sh "$(CC)" -std=c99 $(WARN) $(IEEEFLAGS) -O2 -Isrc -Ispecs

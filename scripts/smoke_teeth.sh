@@ -50,27 +50,23 @@ case_ requires-range src/cbx_round.h cbx_widening proofs/all.c \
   "    requires rt: -CBX_RT <= t <= CBX_RT && t >= 2 * CBX_RT;
     requires r0: 0 <= g0"
 # 2. a precondition inconsistent only through a lemma (in_dom, dom_pair)
-case_ requires-lemma src/cbx_interval.c axis_lo proofs/all_f.c \
+case_ requires-lemma src/cbx_kernel.h cbx_axis proofs/all_f.c \
   "    requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \\nothing;
-    ensures fin: \\is_finite(\\result);
-    ensures sound: \\result <= row_lo" \
+    ensures fin: \\is_finite(\\result.lo) && \\is_finite(\\result.hi);" \
   "    requires rt: -CBX_RT <= t <= CBX_RT;
     requires bad: !in_dom(m0, l0);
     assigns \\nothing;
-    ensures fin: \\is_finite(\\result);
-    ensures sound: \\result <= row_lo"
+    ensures fin: \\is_finite(\\result.lo) && \\is_finite(\\result.hi);"
 # 2b. inconsistent only through a lemma's instance: the class 2^509 x 2^509
 #     implies in_dom (lemma cls_509), which the precondition denies
-case_ requires-via-lemma src/cbx_interval.c term_lo proofs/all.c \
+case_ requires-via-lemma src/cbx_kernel.h cbx_column proofs/all.c \
   "    requires dom: in_dom(m, l) && in_dom(m, h);
     assigns \\nothing;
-    ensures fin: \\is_finite(\\result);
-    ensures err: \\abs(\\result - tmin(m, l, h))" \
+    ensures fin: \\is_finite(\\result.lo)" \
   "    requires dom: in_dom(m, h) && cls(m, l, CBX_SB, CBX_SB) && !in_dom(m, l);
     assigns \\nothing;
-    ensures fin: \\is_finite(\\result);
-    ensures err: \\abs(\\result - tmin(m, l, h))"
+    ensures fin: \\is_finite(\\result.lo)"
 # 3. a trusted contract whose postcondition is false (every call is then dead)
 case_ trusted-post src/cbx_round.h ball_radius proofs/all.c \
   "    ensures fin: \\is_finite(\\result) && \\result >= 0;
@@ -78,7 +74,7 @@ case_ trusted-post src/cbx_round.h ball_radius proofs/all.c \
   "    ensures fin: \\is_finite(\\result) && \\result >= 0 && \\result < 0;
     ensures up:"
 # 4. an inconsistent loop invariant
-case_ loop-invariant src/cbx_batch.c cbx_transform_boxes proofs/all.c \
+case_ loop-invariant src/cbx_batch.c batch proofs/all.c \
   "    /*@ loop invariant rng: 0 <= k <= n;" \
   "    /*@ loop invariant rng: 0 <= k <= n && k > n;"
 # 5. a behavior that no input can take, and code only it reaches

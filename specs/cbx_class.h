@@ -180,40 +180,4 @@
                     b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
 */
 
-/* Row i of *a at label L, as the four values (m_i0, m_i1, m_i2, t_i). */
-#define CBX_ROWV(a, i, L) \
-  \at((a)->m[i][0], L), \at((a)->m[i][1], L), \at((a)->m[i][2], L), \at((a)->m[i][3], L)
-
-/* What a class kernel's fast path promises: cbx_transform_box's box_input
- * case, on values read at Pre, and that the input is that case. */
-#define CBX_FAST_POST(a, in, out) \
-    ensures ok: \result == CBX_OK; \
-    ensures case: \at(!has_nan(a, in) && !is_empty(in), Pre); \
-    ensures axis0: axis_sound_s(out->lo[0], out->hi[0], CBX_ROWV(a, 0, Pre), CBX_BV(in, Pre)); \
-    ensures axis1: axis_sound_s(out->lo[1], out->hi[1], CBX_ROWV(a, 1, Pre), CBX_BV(in, Pre)); \
-    ensures axis2: axis_sound_s(out->lo[2], out->hi[2], CBX_ROWV(a, 2, Pre), CBX_BV(in, Pre)); \
-    ensures rows: \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
-
-/* cbx_transform_box's behaviors, for a function (a, in, out) that promises
- * exactly what cbx_transform_box promises. */
-#define CBX_BOX_BEHAVIORS(a, in, out) \
-    behavior nan_input: \
-      assumes has_nan(a, in); \
-      ensures \result == CBX_EINVAL; \
-      ensures whole_space(out); \
-    behavior empty_input: \
-      assumes !has_nan(a, in) && is_empty(in); \
-      ensures \result == CBX_EMPTY; \
-      ensures empty_out(out); \
-    behavior box_input: \
-      assumes !has_nan(a, in) && !is_empty(in); \
-      ensures \result == CBX_OK || \result == CBX_ERANGE; \
-      ensures axis0: axis_sound_s(out->lo[0], out->hi[0], CBX_ROWV(a, 0, Pre), CBX_BV(in, Pre)); \
-      ensures axis1: axis_sound_s(out->lo[1], out->hi[1], CBX_ROWV(a, 1, Pre), CBX_BV(in, Pre)); \
-      ensures axis2: axis_sound_s(out->lo[2], out->hi[2], CBX_ROWV(a, 2, Pre), CBX_BV(in, Pre)); \
-      ensures ok_iff: \result == CBX_OK <==> \
-        \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre); \
-    complete behaviors; \
-    disjoint behaviors;
-
 #endif /* CBX_CLASS_SPEC_H */

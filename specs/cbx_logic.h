@@ -24,6 +24,10 @@
     logic real tmin(real m, real l, real h) = \min(m*l, m*h);
     logic real tmax(real m, real l, real h) = \max(m*l, m*h);
     logic real tmag(real m, real l, real h) = \max(\abs(m*l), \abs(m*h));
+    // The term of one end: the smaller (up == 0, lower end) or the larger
+    // (up != 0, upper end); one error chain serves both ends.
+    logic real tsel(integer up, real m, real l, real h) =
+      up != 0 ? tmax(m, l, h) : tmin(m, l, h);
 
     // Exact bounds of one output coordinate over the box, and its scale
     // S = |t| + sum_j |m_j| max(|l_j|, |h_j|) used by the tightness bound.
@@ -33,9 +37,28 @@
     logic real row_hi(real m0, real m1, real m2, real t,
                       real l0, real h0, real l1, real h1, real l2, real h2) =
       t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2);
+    lemma tmin_mag: \forall real m, l, h; -tmag(m, l, h) <= tmin(m, l, h) <= tmag(m, l, h);
+    lemma tmax_mag: \forall real m, l, h; -tmag(m, l, h) <= tmax(m, l, h) <= tmag(m, l, h);
+    lemma tsel_mag: \forall integer up, real m, l, h;
+      -tmag(m, l, h) <= tsel(up, m, l, h) <= tmag(m, l, h);
+    logic real row_sel(integer up, real m0, real m1, real m2, real t,
+                       real l0, real h0, real l1, real h1, real l2, real h2) =
+      t + tsel(up, m0, l0, h0) + tsel(up, m1, l1, h1) + tsel(up, m2, l2, h2);
     logic real row_mag(real m0, real m1, real m2, real t,
                        real l0, real h0, real l1, real h1, real l2, real h2) =
       \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + tmag(m2, l2, h2);
+
+    lemma row_lo_mag: \forall real m0, m1, m2, t, l0, h0, l1, h1, l2, h2;
+      -row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+      <= row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    lemma row_hi_mag: \forall real m0, m1, m2, t, l0, h0, l1, h1, l2, h2;
+      -row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+      <= row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    // The end of one row chosen by up: the lower (0) or the upper one.
+    lemma row_sel_lo: \forall real m0, m1, m2, t, l0, h0, l1, h1, l2, h2;
+      row_sel(0, m0, m1, m2, t, l0, h0, l1, h1, l2, h2) == row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    lemma row_sel_hi: \forall real m0, m1, m2, t, l0, h0, l1, h1, l2, h2;
+      row_sel(1, m0, m1, m2, t, l0, h0, l1, h1, l2, h2) == row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 
     // r is below the image of all 8 corners (c_j in {l_j, h_j}).
     predicate below8(real r, real m0, real m1, real m2, real t,
@@ -120,5 +143,54 @@
 #define CBX_BV(b, L) \
   \at((b)->lo[0], L), \at((b)->hi[0], L), \at((b)->lo[1], L), \at((b)->hi[1], L), \
   \at((b)->lo[2], L), \at((b)->hi[2], L)
+
+/* Row i of *a at label L, as the four values (m_i0, m_i1, m_i2, t_i). */
+#define CBX_ROWV(a, i, L) \
+  \at((a)->m[i][0], L), \at((a)->m[i][1], L), \at((a)->m[i][2], L), \at((a)->m[i][3], L)
+
+/* What a class kernel's fast path promises: cbx_transform_box's box_input
+ * case, on values read at Pre, and that the input is that case. */
+#define CBX_FAST_POST(a, in, out) \
+    ensures ok: \result == CBX_OK; \
+    ensures case: \at(!has_nan(a, in) && !is_empty(in), Pre); \
+    ensures axis0: axis_sound_s(out->lo[0], out->hi[0], CBX_ROWV(a, 0, Pre), CBX_BV(in, Pre)); \
+    ensures axis1: axis_sound_s(out->lo[1], out->hi[1], CBX_ROWV(a, 1, Pre), CBX_BV(in, Pre)); \
+    ensures axis2: axis_sound_s(out->lo[2], out->hi[2], CBX_ROWV(a, 2, Pre), CBX_BV(in, Pre)); \
+    ensures rows: \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
+
+/* cbx_transform_box's behaviors, for a function (a, in, out) that promises
+ * exactly what cbx_transform_box promises. */
+#define CBX_BOX_BEHAVIORS(a, in, out) \
+    behavior nan_input: \
+      assumes has_nan(a, in); \
+      ensures \result == CBX_EINVAL; \
+      ensures whole_space(out); \
+    behavior empty_input: \
+      assumes !has_nan(a, in) && is_empty(in); \
+      ensures \result == CBX_EMPTY; \
+      ensures empty_out(out); \
+    behavior box_input: \
+      assumes !has_nan(a, in) && !is_empty(in); \
+      ensures \result == CBX_OK || \result == CBX_ERANGE; \
+      ensures axis0: axis_sound_s(out->lo[0], out->hi[0], CBX_ROWV(a, 0, Pre), CBX_BV(in, Pre)); \
+      ensures axis1: axis_sound_s(out->lo[1], out->hi[1], CBX_ROWV(a, 1, Pre), CBX_BV(in, Pre)); \
+      ensures axis2: axis_sound_s(out->lo[2], out->hi[2], CBX_ROWV(a, 2, Pre), CBX_BV(in, Pre)); \
+      ensures ok_iff: \result == CBX_OK <==> \
+        \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre); \
+    complete behaviors; \
+    disjoint behaviors;
+
+/* What the batch forms promise for the map *a: for every k < n, out[k] is
+ * cbx_transform_box's output for in[k] (box_done_m), and the result is the
+ * most severe status met (CBX_OK when n == 0). */
+#define CBX_BATCH_POST(a) \
+    ensures done: \forall integer k; 0 <= k < n ==> \
+      box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]); \
+    ensures worst: \forall integer k; 0 <= k < n ==> \
+      box_sev_le(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result)); \
+    ensures met: n > 0 ==> \exists integer k; 0 <= k < n && \
+      box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result)); \
+    ensures none: n == 0 ==> \result == CBX_OK; \
+    ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
 
 #endif /* CBX_LOGIC_H */

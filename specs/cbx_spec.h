@@ -225,6 +225,32 @@
           && (row_unb_hi(m0, m1, m2, l0, h0, l1, h1, l2, h2)
               || vdom_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)));
 
+    // The fast range, checked once per map and once per box: every linear
+    // entry and every box end at most CBX_SB (2^509; binary32 2^61) in
+    // magnitude, every box axis ordered, every translation at most CBX_RT.
+    // Every pair then lies in the first magnitude class: the row is full.
+    predicate map_fast(cbx_affine *a) =
+         -CBX_SB <= a->m[0][0] <= CBX_SB && -CBX_SB <= a->m[0][1] <= CBX_SB
+      && -CBX_SB <= a->m[0][2] <= CBX_SB && -CBX_RT <= a->m[0][3] <= CBX_RT
+      && -CBX_SB <= a->m[1][0] <= CBX_SB && -CBX_SB <= a->m[1][1] <= CBX_SB
+      && -CBX_SB <= a->m[1][2] <= CBX_SB && -CBX_RT <= a->m[1][3] <= CBX_RT
+      && -CBX_SB <= a->m[2][0] <= CBX_SB && -CBX_SB <= a->m[2][1] <= CBX_SB
+      && -CBX_SB <= a->m[2][2] <= CBX_SB && -CBX_RT <= a->m[2][3] <= CBX_RT
+      && \is_finite(a->m[0][0]) && \is_finite(a->m[0][1]) && \is_finite(a->m[0][2])
+      && \is_finite(a->m[0][3]) && \is_finite(a->m[1][0]) && \is_finite(a->m[1][1])
+      && \is_finite(a->m[1][2]) && \is_finite(a->m[1][3]) && \is_finite(a->m[2][0])
+      && \is_finite(a->m[2][1]) && \is_finite(a->m[2][2]) && \is_finite(a->m[2][3]);
+    predicate box_fast(cbx_box *b) =
+         -CBX_SB <= b->lo[0] && b->lo[0] <= b->hi[0] && b->hi[0] <= CBX_SB
+      && -CBX_SB <= b->lo[1] && b->lo[1] <= b->hi[1] && b->hi[1] <= CBX_SB
+      && -CBX_SB <= b->lo[2] && b->lo[2] <= b->hi[2] && b->hi[2] <= CBX_SB
+      && \is_finite(b->lo[0]) && \is_finite(b->hi[0]) && \is_finite(b->lo[1])
+      && \is_finite(b->hi[1]) && \is_finite(b->lo[2]) && \is_finite(b->hi[2]);
+
+    // A prepared map: its fast flag is set only if its map is in the fast
+    // range (the class is checked where it is used).
+    predicate prepared(cbx_prepared *p) = p->fast != 0 ==> map_fast(&p->a);
+
     // Axis i is computed without loss (status CBX_OK): see axis_ok_s.
     predicate row_ok(cbx_affine *a, cbx_box *b, integer i) =
       axis_ok_s(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3],

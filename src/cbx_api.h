@@ -74,16 +74,46 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
 /*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
     assigns out[0 .. n - 1];
-    ensures done: \forall integer k; 0 <= k < n ==>
-      box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]);
-    ensures worst: \forall integer k; 0 <= k < n ==>
-      box_sev_le(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
-    ensures met: n > 0 ==> \exists integer k; 0 <= k < n &&
-      box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
-    ensures none: n == 0 ==> \result == CBX_OK;
-    ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
+    CBX_BATCH_POST(a)
 */
 cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t n);
+
+/* ---- prepared maps: the per-map work done once -------------------------
+ * cbx_prepare copies the map into *p and records whether it lies in the
+ * fast range (the one check per map) and, in binary64, its class
+ * (cbx_classify).  cbx_transform_box_prep then checks only the box (one
+ * check per box) and runs the branch-free kernel, or the class kernel, or
+ * the careful path: the same statuses, special outputs and promise as
+ * cbx_transform_box on p->a (proven).  The class is checked against the
+ * map where it is used (a wrong class falls back to the general kernel),
+ * so only the fast flag is taken from *p: it must come from cbx_prepare (or
+ * be 0, as in a zero-initialised struct).  cbx_transform_boxes_prep is the
+ * batch form: it checks the fast flag and the class again once per call,
+ * so even a *p changed by hand gives sound boxes; then every box as
+ * cbx_transform_box_prep.  Its promise is cbx_transform_boxes' on p->a. */
+/*@ requires valid: \valid_read(a) && \valid(p) && \separated(a, p);
+    assigns *p;
+    ensures copy: p->a == \at(*a, Pre);
+    ensures prep: prepared(p);
+*/
+void cbx_prepare(const cbx_affine *a, cbx_prepared *p);
+
+/*@ requires valid_p:   \valid_read(p);
+    requires valid_in:  \valid_read(in);
+    requires valid_out: \valid(out);
+    requires sep: \separated(out, p) && (\separated(out, in) || out == in);
+    requires prep: prepared(p);
+    assigns *out;
+    CBX_BOX_BEHAVIORS(&p->a, in, out)
+*/
+cbx_status cbx_transform_box_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out);
+
+/*@ requires valid: \valid_read(p) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
+    requires sep: \separated(out + (0 .. n - 1), p) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
+    assigns out[0 .. n - 1];
+    CBX_BATCH_POST(&p->a)
+*/
+cbx_status cbx_transform_boxes_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out, size_t n);
 
 /* ---- center/half-diagonal form (Arvo's Fig. 2) -------------------------
  * A cbx_cbox means the exact real box [c - h, c + h] (per axis); h >= 0.

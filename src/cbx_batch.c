@@ -1,32 +1,31 @@
 /*
- * Batch form of the interval transform: one call per box of the proven
- * kernel, and the most severe status met.  binary64: the map is classified
- * once (cbx_classify) and every box goes through the class kernel
- * (cbx_transform_box_as, cbx_transform_box's promise); binary32 (the
- * float family has no class kernels): cbx_transform_boxf.  The call for
- * box k writes exactly out[k]; the loop invariant carries each finished
- * box's whole promise as a predicate on values (box_done_m), which a write
- * elsewhere cannot touch.
+ * Batch forms of the interval transform: cbx_transform_boxes (a map) and
+ * cbx_transform_boxes_prep (a prepared map), the most severe status met.
+ * binary64: the map's class is found once per call (cbx_classify, so a
+ * prepared map's recorded class and fast flag are not trusted here); a
+ * general map sends every box to cbx_transform_box (one range check of the
+ * map and one of the box, then the branch-free kernel), a map of a smaller
+ * class to the class kernel (cbx_transform_box_as).  binary32:
+ * cbx_transform_boxf.  Either way out[k] is exactly
+ * cbx_transform_box_as(a, cbx_classify(a), in + k, out + k)'s output
+ * (binary32: cbx_transform_boxf's).  The call for box k writes exactly
+ * out[k]; the loop invariant carries each finished box's whole promise as a
+ * predicate on values (box_done_m), which a write elsewhere cannot touch.
  */
 #include "certbox.h"
 #include "cbx_onebox.h"
-
 /* The per-box kernel: the class kernel in binary64, the general one in
  * binary32 (where CBX_CLS_ARG and the class clauses vanish). */
 #if CBX_INST == 64
 #define CBX_CLS_PARAM , cbx_class cls
 #define CBX_CLS_ARG , cls
-#define CBX_CLS_REQ requires cls: class_ok(a, cls);
-#define CBX_CLS_ENS ensures cls: class_ok(a, cls);
-#define CBX_CLS_INV loop invariant cls: class_ok(a, cls);
 #define CBX_ONE_BOX(a, b) one_box_as(a, cls, b)
+#define CBX_IS_GENERAL (cls == CBX_CLASS_GENERAL)
 #else
 #define CBX_CLS_PARAM
 #define CBX_CLS_ARG
-#define CBX_CLS_REQ
-#define CBX_CLS_ENS
-#define CBX_CLS_INV
 #define CBX_ONE_BOX(a, b) one_box(a, b)
+#define CBX_IS_GENERAL 1
 #endif
 
 /* Severity order of the statuses (specs: sev). */
@@ -59,31 +58,36 @@ static void put_box(cbx_box *out, size_t k, size_t n, cbx_box o)
 /*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
     requires k: k < n;
-    CBX_CLS_REQ
     assigns out[k];
     ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]);
     ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
     ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
     ensures frame: \forall integer j; 0 <= j < n && j != k ==> out[j] == \at(out[j], Pre);
-    CBX_CLS_ENS
 */
 static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in, cbx_box *out,
                        size_t k, size_t n)
 {
-    box_st r = CBX_ONE_BOX(a, in + k);
+    box_st r;
+    if (CBX_IS_GENERAL)
+        r = one_box(a, in + k);
+    else
+        r = CBX_ONE_BOX(a, in + k);
     put_box(out, k, n, r.o);
     return r.s;
 }
 
-cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t n)
+/* The loop over the boxes under one map, checked by the caller. */
+/*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
+    requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
+    assigns out[0 .. n - 1];
+    CBX_BATCH_POST(a)
+*/
+static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in,
+                        cbx_box *out, size_t n)
 {
     cbx_status worst = CBX_OK;
-#if CBX_INST == 64
-    cbx_class cls = cbx_classify(a);   /* classify once: the prepared form */
-#endif
     size_t k;
     /*@ loop invariant rng: 0 <= k <= n;
-        CBX_CLS_INV
         loop invariant done: \forall integer j; 0 <= j < k ==>
           box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]);
         loop invariant sevmax: \forall integer j; 0 <= j < k ==>
@@ -105,4 +109,19 @@ cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *
     }
     /*@ assert kn: k == n; */
     return worst;
+}
+
+cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t n)
+{
+#if CBX_INST == 64
+    cbx_class cls = cbx_classify(a);   /* once per call */
+#endif
+    return batch(a CBX_CLS_ARG, in, out, n);
+}
+
+/* Nothing of *p but its map is used (the class is found again, once per
+ * call): a prepared map changed by hand still gives sound boxes. */
+cbx_status cbx_transform_boxes_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out, size_t n)
+{
+    return cbx_transform_boxes(&p->a, in, out, n);
 }

@@ -451,9 +451,26 @@ cbx_class cbx_classify(const cbx_affine *a)
     return CBX_CLASS_GENERAL;
 }
 
-cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_box *in, cbx_box *out)
+/* The class a caller passed, checked against the map: cls if the map is in
+ * it (cls no larger than cbx_classify(a): each class is contained in the
+ * next), the general class otherwise, so a class passed apart from its map
+ * (an easy mix-up) costs speed, never soundness. */
+/*@ requires valid: \valid_read(a);
+    assigns \nothing;
+    ensures ok: class_ok(a, \result);
+*/
+static cbx_class class_checked(const cbx_affine *a, cbx_class cls)
+{
+    cbx_class c = cbx_classify(a);
+    if (cls >= CBX_CLASS_GENERAL && cls <= c)
+        return cls;
+    return CBX_CLASS_GENERAL;
+}
+
+cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls0, const cbx_box *in, cbx_box *out)
 {
     cbx_status r;
+    cbx_class cls = class_checked(a, cls0);
     if (cls == CBX_CLASS_IDENTITY)
         r = kern_identity(a, in, out);
     else if (cls == CBX_CLASS_TRANSLATE)

@@ -1,163 +1,22 @@
 /*
  * Arvo's interval form (Graphics Gems I, "Transforming Axis-Aligned
- * Bounding Boxes", Fig. 1), outward rounded.
+ * Bounding Boxes", Fig. 1), outward rounded: cbx_transform_box.
  *
- * Per output axis: start at the translation t and add, for each input axis
- * j, the smaller (for lo) or larger (for hi) of m_j*l_j and m_j*h_j, all in
- * round-to-nearest.  Then widen once by w = 5.5 u R + 2^-1067, where
- * R = |t| + sum_j max(|m_j l_j|, |m_j h_j|) (computed).  The rounding error
- * of the whole sum is at most about 5 u S (4 u S in the sum, u S in the final
- * widening step), so one widening per bound pays for every rounding; the
- * proof (asserts below) keeps track of it step by step.
+ * The fast range (one check per map, one per box; src/cbx_fast.h) goes
+ * straight to the branch-free kernel (src/cbx_kernel.h: per axis, the
+ * round-to-nearest sums of Arvo's form widened once by 5.5 u R + 2^-1067).
+ * Everything else takes the careful path below, axis by axis: the same
+ * kernel on a full row, each end from its vertex on a half-space or
+ * out-of-domain row, the whole line on an infinite map entry, and the
+ * NaN and empty cases first.  On the fast range both paths give the same
+ * bits.
  */
 #include "certbox.h"
 #include "cbx_round.h"
 #include "cbx_domain.h"
 #include "cbx_vertex.h"
-
-/* The smaller of m*l and m*h: error u*tmag + eta (one rounding each). */
-/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
-    requires dom: in_dom(m, l) && in_dom(m, h);
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures err: \abs(\result - tmin(m, l, h)) <= CBX_U * tmag(m, l, h) + CBX_ETA;
-*/
-static inline cbx_fp term_lo(cbx_fp m, cbx_fp l, cbx_fp h)
-{
-    cbx_fp p = cbx_mul_rn(m, l);
-    cbx_fp q = cbx_mul_rn(m, h);
-    return cbx_min2(p, q);
-}
-
-/* The larger of m*l and m*h. */
-/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
-    requires dom: in_dom(m, l) && in_dom(m, h);
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures err: \abs(\result - tmax(m, l, h)) <= CBX_U * tmag(m, l, h) + CBX_ETA;
-*/
-static inline cbx_fp term_hi(cbx_fp m, cbx_fp l, cbx_fp h)
-{
-    cbx_fp p = cbx_mul_rn(m, l);
-    cbx_fp q = cbx_mul_rn(m, h);
-    return cbx_max2(p, q);
-}
-
-/* max(|m*l|, |m*h|), within a relative u of the exact value. */
-/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
-    requires dom: in_dom(m, l) && in_dom(m, h);
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures lo: \result >= tmag(m, l, h) - CBX_U * tmag(m, l, h) - CBX_ETA;
-    ensures hi: \result <= tmag(m, l, h) + CBX_U * tmag(m, l, h) + CBX_ETA;
-    ensures pos: \result >= 0;
-*/
-static inline cbx_fp term_mag(cbx_fp m, cbx_fp l, cbx_fp h)
-{
-    cbx_fp p = cbx_mul_rn(m, l);
-    cbx_fp q = cbx_mul_rn(m, h);
-    return cbx_max2(cbx_abs(p), cbx_abs(q));
-}
-
-/* Lower bound of one output axis. */
-/*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
-    requires finb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-                   && \is_finite(l2) && \is_finite(h2);
-    requires dom: in_dom(m0, l0) && in_dom(m0, h0) && in_dom(m1, l1) && in_dom(m1, h1)
-                  && in_dom(m2, l2) && in_dom(m2, h2);
-    requires rt: -CBX_RT <= t <= CBX_RT;
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures sound: \result <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    ensures tight: lo_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-*/
-static cbx_fp axis_lo(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
-                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
-{
-    cbx_fp d0 = term_lo(m0, l0, h0);
-    cbx_fp d1 = term_lo(m1, l1, h1);
-    cbx_fp d2 = term_lo(m2, l2, h2);
-    cbx_fp g0 = term_mag(m0, l0, h0);
-    cbx_fp g1 = term_mag(m1, l1, h1);
-    cbx_fp g2 = term_mag(m2, l2, h2);
-    /*@ assert M: 0 <= tmag(m0, l0, h0) <= CBX_RT && 0 <= tmag(m1, l1, h1) <= CBX_RT
-                  && 0 <= tmag(m2, l2, h2) <= CBX_RT; */
-    /*@ assert X0: -(tmag(m0, l0, h0)) <= tmin(m0, l0, h0) <= tmag(m0, l0, h0); */
-    /*@ assert d0e: -(CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= d0 - tmin(m0, l0, h0) <= CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
-    /*@ assert X1: -(tmag(m1, l1, h1)) <= tmin(m1, l1, h1) <= tmag(m1, l1, h1); */
-    /*@ assert d1e: -(CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= d1 - tmin(m1, l1, h1) <= CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
-    /*@ assert X2: -(tmag(m2, l2, h2)) <= tmin(m2, l2, h2) <= tmag(m2, l2, h2); */
-    /*@ assert d2e: -(CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= d2 - tmin(m2, l2, h2) <= CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
-    cbx_fp s1 = cbx_add_rn(t, d0);
-    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
-    /*@ assert r1: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA) <= s1 - (t + d0) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA; */
-    /*@ assert e1: -(CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA) <= s1 - (t + tmin(m0, l0, h0)) <= CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA; */
-    cbx_fp s2 = cbx_add_rn(s1, d1);
-    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
-    /*@ assert r2: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA) <= s2 - (s1 + d1) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA; */
-    /*@ assert e2: -(CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA) <= s2 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1)) <= CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA; */
-    cbx_fp s3 = cbx_add_rn(s2, d2);
-    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
-    /*@ assert r3: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA) <= s3 - (s2 + d2) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA; */
-    /*@ assert e3: -(CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA) <= s3 - (t + tmin(m0, l0, h0) + tmin(m1, l1, h1) + tmin(m2, l2, h2)) <= CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA; */
-    /*@ assert e3s: -(CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA) <= s3 - row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA; */
-    cbx_fp w = cbx_widening(t, g0, g1, g2);
-    /*@ assert w1: w >= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - CBX_U16)
-                        + CBX_ETA64 - CBX_ETA8; */
-    /*@ assert w2: w <= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + CBX_U16)
-                        + CBX_ETA256 + CBX_ETA8; */
-    return cbx_sub_rn(s3, w);
-}
-
-/* Upper bound of one output axis (mirror of axis_lo). */
-/*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
-    requires finb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-                   && \is_finite(l2) && \is_finite(h2);
-    requires dom: in_dom(m0, l0) && in_dom(m0, h0) && in_dom(m1, l1) && in_dom(m1, h1)
-                  && in_dom(m2, l2) && in_dom(m2, h2);
-    requires rt: -CBX_RT <= t <= CBX_RT;
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures sound: \result >= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    ensures tight: hi_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-*/
-static cbx_fp axis_hi(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
-                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
-{
-    cbx_fp d0 = term_hi(m0, l0, h0);
-    cbx_fp d1 = term_hi(m1, l1, h1);
-    cbx_fp d2 = term_hi(m2, l2, h2);
-    cbx_fp g0 = term_mag(m0, l0, h0);
-    cbx_fp g1 = term_mag(m1, l1, h1);
-    cbx_fp g2 = term_mag(m2, l2, h2);
-    /*@ assert M: 0 <= tmag(m0, l0, h0) <= CBX_RT && 0 <= tmag(m1, l1, h1) <= CBX_RT
-                  && 0 <= tmag(m2, l2, h2) <= CBX_RT; */
-    /*@ assert X0: -(tmag(m0, l0, h0)) <= tmax(m0, l0, h0) <= tmag(m0, l0, h0); */
-    /*@ assert d0e: -(CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= d0 - tmax(m0, l0, h0) <= CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
-    /*@ assert X1: -(tmag(m1, l1, h1)) <= tmax(m1, l1, h1) <= tmag(m1, l1, h1); */
-    /*@ assert d1e: -(CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= d1 - tmax(m1, l1, h1) <= CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
-    /*@ assert X2: -(tmag(m2, l2, h2)) <= tmax(m2, l2, h2) <= tmag(m2, l2, h2); */
-    /*@ assert d2e: -(CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= d2 - tmax(m2, l2, h2) <= CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
-    cbx_fp s1 = cbx_add_rn(t, d0);
-    /*@ assert a1: -(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) <= t + d0 <= \abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA; */
-    /*@ assert r1: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA) <= s1 - (t + d0) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_U*tmag(m0, l0, h0) + CBX_ETA) + CBX_ETA; */
-    /*@ assert e1: -(CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA) <= s1 - (t + tmax(m0, l0, h0)) <= CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA; */
-    cbx_fp s2 = cbx_add_rn(s1, d1);
-    /*@ assert a2: -(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) <= s1 + d1 <= \abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA; */
-    /*@ assert r2: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA) <= s2 - (s1 + d1) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + CBX_UP*(1*\abs(t) + 2*tmag(m0, l0, h0)) + 3*CBX_ETA + tmag(m1, l1, h1) + CBX_U*tmag(m1, l1, h1) + CBX_ETA) + CBX_ETA; */
-    /*@ assert e2: -(CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA) <= s2 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1)) <= CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA; */
-    cbx_fp s3 = cbx_add_rn(s2, d2);
-    /*@ assert a3: -(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) <= s2 + d2 <= \abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA; */
-    /*@ assert r3: -(CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA) <= s3 - (s2 + d2) <= CBX_U*(\abs(t) + tmag(m0, l0, h0) + tmag(m1, l1, h1) + CBX_UP*(2*\abs(t) + 3*tmag(m0, l0, h0) + 2*tmag(m1, l1, h1)) + 6*CBX_ETA + tmag(m2, l2, h2) + CBX_U*tmag(m2, l2, h2) + CBX_ETA) + CBX_ETA; */
-    /*@ assert e3: -(CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA) <= s3 - (t + tmax(m0, l0, h0) + tmax(m1, l1, h1) + tmax(m2, l2, h2)) <= CBX_UP*(3*\abs(t) + 4*tmag(m0, l0, h0) + 3*tmag(m1, l1, h1) + 2*tmag(m2, l2, h2)) + 9*CBX_ETA; */
-    /*@ assert e3s: -(CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA) <= s3 - row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA; */
-    cbx_fp w = cbx_widening(t, g0, g1, g2);
-    /*@ assert w1: w >= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - CBX_U16)
-                        + CBX_ETA64 - CBX_ETA8; */
-    /*@ assert w2: w <= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + CBX_U16)
-                        + CBX_ETA256 + CBX_ETA8; */
-    return cbx_add_rn(s3, w);
-}
+#include "cbx_kernel.h"
+#include "cbx_fast.h"
 
 /*@ requires \valid(out);
     assigns *out;
@@ -200,7 +59,7 @@ static void set_empty(cbx_box *out)
 */
 static cbx_fp point_lo(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t, cbx_fp v0, cbx_fp v1, cbx_fp v2)
 {
-    return axis_lo(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+    return cbx_axis(m0, m1, m2, t, v0, v0, v1, v1, v2, v2).lo;
 }
 
 /*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
@@ -212,7 +71,7 @@ static cbx_fp point_lo(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t, cbx_fp v0, cbx
 */
 static cbx_fp point_hi(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t, cbx_fp v0, cbx_fp v1, cbx_fp v2)
 {
-    return axis_hi(m0, m1, m2, t, v0, v0, v1, v1, v2, v2);
+    return cbx_axis(m0, m1, m2, t, v0, v0, v1, v1, v2, v2).hi;
 }
 
 /* Lower end of one output axis from its vertex; ok == 0: lost to the domain. */
@@ -293,8 +152,9 @@ static axis_result transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
 {
     axis_result r;
     if (cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) {
-        r.lo = axis_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-        r.hi = axis_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+        cbx_ends e = cbx_axis(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+        r.lo = e.lo;
+        r.hi = e.hi;
         r.ok = 1;
     } else if (cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)) {
         end_result lo = ext_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
@@ -341,8 +201,14 @@ static int any_inverted(const cbx_box *in)
            || cbx_no_point(in->lo[2], in->hi[2]);
 }
 
+/* One check per map and per box: the branch-free kernel on the fast range
+ * (src/cbx_fast.h); otherwise the careful path: NaN, empty, then axis by
+ * axis (the same kernel on a full row, each end from its vertex on a
+ * half-space or out-of-domain row, the whole line on an infinite entry). */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
+    if (cbx_map_fast(a) && cbx_box_fast(in))
+        return cbx_fast_box(a, in, out);
     if (any_nan(a, in)) {
         set_whole(out);
         return CBX_EINVAL;
@@ -376,4 +242,32 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     /*@ assert as1: axis_sound_s(out->lo[1], out->hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2); */
     /*@ assert as2: axis_sound_s(out->lo[2], out->hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2); */
     return (r0.ok && r1.ok && r2.ok) ? CBX_OK : CBX_ERANGE;
+}
+
+
+/* ---- prepared maps ---------------------------------------------------- */
+
+void cbx_prepare(const cbx_affine *a, cbx_prepared *p)
+{
+    p->a = *a;
+    p->fast = cbx_map_fast(&p->a);
+#if CBX_INST == 64
+    p->cls = (int)cbx_classify(&p->a);
+#else
+    p->cls = 0;
+#endif
+}
+
+/* The box check only: the map's was done by cbx_prepare (p->fast).  A
+ * class other than GENERAL goes to the class kernel, which checks it
+ * against the map. */
+cbx_status cbx_transform_box_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out)
+{
+#if CBX_INST == 64
+    if (p->cls != (int)CBX_CLASS_GENERAL)
+        return cbx_transform_box_as(&p->a, (cbx_class)p->cls, in, out);
+#endif
+    if (p->fast && cbx_box_fast(in))
+        return cbx_fast_box(&p->a, in, out);
+    return cbx_transform_box(&p->a, in, out);
 }

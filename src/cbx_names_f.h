@@ -37,6 +37,9 @@
 #define axis_proven axis_proven_f
 #define axis_sound_s axis_sound_s_f
 #define axis_ok_s axis_ok_s_f
+#define map_fast map_fast_f
+#define box_fast box_fast_f
+#define prepared prepared_f
 #define row_ok row_ok_f
 #define nan_v nan_v_f
 #define empty_v empty_v_f
@@ -106,6 +109,9 @@
 #undef axis_proven
 #undef axis_sound_s
 #undef axis_ok_s
+#undef map_fast
+#undef box_fast
+#undef prepared
 #undef row_ok
 #undef nan_v
 #undef empty_v

@@ -148,6 +148,10 @@
 #define cbx_cbox cbx_cboxf
 #define cbx_transform_box cbx_transform_boxf
 #define cbx_transform_boxes cbx_transform_boxesf
+#define cbx_prepared cbx_preparedf
+#define cbx_prepare cbx_preparef
+#define cbx_transform_box_prep cbx_transform_box_prepf
+#define cbx_transform_boxes_prep cbx_transform_boxes_prepf
 #define cbx_transform_cbox cbx_transform_cboxf
 #define cbx_box_to_cbox cbx_box_to_cboxf
 #define cbx_cbox_to_box cbx_cbox_to_boxf

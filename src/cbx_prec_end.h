@@ -9,6 +9,10 @@
 #undef cbx_cbox
 #undef cbx_transform_box
 #undef cbx_transform_boxes
+#undef cbx_prepared
+#undef cbx_prepare
+#undef cbx_transform_box_prep
+#undef cbx_transform_boxes_prep
 #undef cbx_transform_cbox
 #undef cbx_box_to_cbox
 #undef cbx_cbox_to_box

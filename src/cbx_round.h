@@ -79,13 +79,27 @@ static inline cbx_fp cbx_add_rn(cbx_fp x, cbx_fp y) { return x + y; }
 */
 static inline cbx_fp cbx_sub_rn(cbx_fp x, cbx_fp y) { return x - y; }
 
-/* |x|, exact. */
+/* -x, exact. */
+/*@ requires fin: \is_finite(x);
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures val: \result == -x;
+*/
+static inline cbx_fp cbx_neg(cbx_fp x) { return -x; }
+
+/* |x|, exact.  Written as the larger of x and -x in the form
+ * `x < y ? y : x` that compilers turn into one max instruction (maxsd),
+ * not a compare-and-branch; the same value as x < 0 ? -x : x, -0 included. */
 /*@ requires fin: \is_finite(x);
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures val: \result == \abs(x);
 */
-static inline cbx_fp cbx_abs(cbx_fp x) { return x < CBX_C(0.0) ? -x : x; }
+static inline cbx_fp cbx_abs(cbx_fp x)
+{
+    cbx_fp n = -x;
+    return x < n ? n : x;
+}
 
 /* min and max, exact (inputs are never NaN here). */
 /*@ requires fin: \is_finite(x) && \is_finite(y);

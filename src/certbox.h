@@ -61,6 +61,16 @@ typedef struct cbx_affinef { float m[3][4]; } cbx_affinef;
 typedef struct cbx_boxf { float lo[3], hi[3]; } cbx_boxf;
 typedef struct cbx_cboxf { float c[3], h[3]; } cbx_cboxf;
 
+/* A map prepared once for many boxes (cbx_prepare, cbx_preparef): a copy
+ * of the map, and whether it lies in the fast range (every linear entry at
+ * most 2^509 in magnitude, every translation at most 2^1018; binary32:
+ * 2^61 and 2^122), and its transform class (binary64; cbx_classify).  The
+ * class travels with the map it was computed from.  Fill it only with
+ * cbx_prepare; a zero-initialised one is valid too (it takes the careful
+ * path and the general kernel), so is a copy of a prepared one. */
+typedef struct cbx_prepared { cbx_affine a; int fast; int cls; } cbx_prepared;
+typedef struct cbx_preparedf { cbx_affinef a; int fast; int cls; } cbx_preparedf;
+
 typedef enum cbx_status {
     CBX_OK = 0,      /* result proven to contain the exact image           */
     CBX_EMPTY = 1,   /* input box empty (lo > hi on some axis): out empty  */
@@ -176,9 +186,12 @@ cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_b
  * fast range (any end infinite or above 2^509 in magnitude for SCALE and
  * PERMUTE, 2^1018 for IDENTITY and TRANSLATE; empty or NaN boxes) take the
  * general kernel.
- * cls must be cbx_classify(a) or a larger class (GENERAL is always
- * allowed): classify once, then apply to many boxes (the prepared form;
- * cbx_transform_boxes does this itself). */
+ * cls is a hint: classify once, then apply to many boxes.  It is checked
+ * against the map on every call (cbx_classify's comparisons, well
+ * predicted for a repeated map): a class the map is not in (a class kept
+ * apart from its map and mixed up) runs the general kernel, so the box is
+ * sound for any cls; a larger class than cbx_classify(a) (GENERAL) is
+ * always allowed.  cbx_prepare keeps the class with its map. */
 /*@ requires valid: \valid_read(a);
     assigns \nothing;
     ensures holds: class_ok(a, \result);
@@ -190,7 +203,6 @@ cbx_class cbx_classify(const cbx_affine *a);
     requires valid_in:  \valid_read(in);
     requires valid_out: \valid(out);
     requires sep: \separated(out, a) && (\separated(out, in) || out == in);
-    requires cls: class_ok(a, cls);
     assigns *out;
     CBX_BOX_BEHAVIORS(a, in, out)
 */

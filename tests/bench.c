@@ -1,133 +1,165 @@
 /*
- * bench: the benchmark table of issue 5 (`make bench`, `make bench-smoke`).
+ * bench: the benchmark of issue 5 and of the fast path (`make bench`,
+ * `make bench-smoke`).
  *
  * Usage: bench [-n N] [-r R] [-calls C] [-exact NE] [-gmp NG] [-cache NC]
  *              [-big NB] [-scene NS] [-seed S] [-o DIR]
- *   N   cases of rows 1-6 (default 20000)      R   timed runs (11, odd)
- *   C   calls per run (200000)                  NE  exactly measured (20000)
- *   NG  cases of the GMP row (2000)             NC  in-cache throughput (1000)
+ *   N   cases of the main rows (default 20000)  R   timed rounds (11)
+ *   C   calls per run (200000)                   NE  exactly measured (20000)
+ *   NG  cases of the GMP row (2000)              NC  in-cache throughput (1000)
  *   NB  large-array throughput (4000000; 0: no throughput rows)
- *   S   seed (20240501)                         DIR output (build/bench-out)
- * Prints one markdown table to stdout and writes DIR/bench.md (the same
- * table) and DIR/bench.dat (one block per plotted row, for scripts/bench.gp,
- * which scripts/bench_plot.sh runs).  Exit status 1 if a certbox row has a
- * containment failure, a call that does not return CBX_OK, a batch
- * output (row 3b) that is not bit-identical to the loop of single calls,
- * or a class-kernel end (row Sc) looser than the general kernel's.
+ *   NS  scene instances (NB / 4; N when NB is 0)
+ *   S   seed (20240501)                          DIR output (build/bench-out)
+ * Writes DIR/bench.tsv: every row of this build (one line each: times,
+ * ratios, exact excess, checks, notes) and, as "#meta" lines, the machine,
+ * the compiler, the flags and the date; prints a short summary.
+ * scripts/bench_table.py renders the bench.tsv of one or more builds as one
+ * markdown table, DIR/bench.md, and DIR/bench.dat for the plot
+ * (scripts/bench_plot.sh, scripts/bench.gp).  `make bench` and `make
+ * bench-smoke` build this file twice: build/bench with the library's flags
+ * (-O2) against build/libcertbox.a, and build/bench-native with
+ * -O3 -march=native against build/native/libcertbox.a (the library
+ * compiled again with those flags); both keep -ffp-contract=off
+ * -fno-fast-math.  They run one after the other and their tables are
+ * merged, one column group per build.
+ * Exit status 1 if a certbox row has a containment failure, a call that
+ * does not return CBX_OK, an output that is not bit-identical to the row it
+ * must equal (the prepared and batch forms against cbx_transform_box(f)
+ * on the same maps and boxes, checked untimed), a tight end that is not the
+ * tightest double, or a scene class-kernel end looser than the general
+ * kernel's.
  *   make bench        -n 20000 -r 11 -calls 200000 -exact 20000 -gmp 2000
- *                     -cache 1000 -big 4000000 (about 1.5 GB of memory)
- *   make bench-smoke  -n 2000 -r 5 -calls 20000 -exact 2000 -gmp 200
- *                     -cache 1000 -big 100000 (about a second)
+ *                     -cache 1000 -big 4000000 (about 2.5 GB of memory)
+ *   make bench-smoke  -n 2000 -r 11 -calls 10000 -exact 2000 -gmp 200
+ *                     -cache 500 -big 50000 (a few seconds per build)
  *
  * Inputs (fixed seed S): N random affine maps M = R diag(s) with T (R a
  * rotation from a uniform random unit quaternion, s_j = +-2^[-4,4] with 10%
  * reflections, T_i = +-[0,1) * 2^[-2,10]) and N boxes of mixed sizes
  * (center +-[0,1) * 2^[-4,8], half-width 2^[-12,6] per axis, 5% of the
- * axes flat: lo = hi).  Every row below runs on these same N cases.
+ * axes flat: lo = hi).  The binary32 rows run on the same N cases rounded
+ * to binary32 (untimed).  All inputs lie in the fast range of the
+ * prepared maps, so the fast path is what the certbox rows time.
  *
- * Rows
- *   1  naive 8 corners, RN: each corner transformed as a point, min / max
- *      (pbrt, Embree); tests/bench_ref.h ref_naive8, not in the library.
- *   2  classic Arvo interval form, RN (cglm, Godot): ref_arvo_box; the
- *      baseline of the "vs row 2" column.  Unsound (no widening).
- *   3  certbox cbx_transform_box (interval form, outward, proven).
- *   3t certbox tight: cbx_transform_box_tight (every finite end the
- *      tightest double, RD / RU of the exact end); its notes give, exactly
- *      (GMP, MPFR), how many ends are not the tightest double and by how
- *      many ulps (should be 0).
- *   3b certbox batch: cbx_transform_boxes(&a[0], in, out, N), one call over
- *      the same N boxes, all under the first map (the batch form takes one
- *      map); excess measured against that map; the notes give a loop of
- *      cbx_transform_box over the same boxes and map (untabled timing) and
- *      check that the batch output is bit-identical to it.
- *   4  certbox cbx_transform_cbox; its inputs are converted with
- *      cbx_box_to_cbox (outward) before the timed loops.
- *   5  classic Arvo center/half form, RN: ref_arvo_cbox on inputs converted
- *      with c = (lo+hi)/2, h = (hi-lo)/2 in RN, before the timed loops.
- *   6a sphere: cbx_sphere_box (exact dual-quadric bound t -+ sqrt(sum m^2),
- *      outward) of the unit ball under the same N maps.
- *   6b sphere by Arvo: cbx_transform_box of the ball's box [-1,1]^3 under
- *      the same maps (sound, but the box of a rotated box); the notes give
- *      the mean of vol(6b) / vol(6a) over the exact subset.
- *   7  GMP exact: xu_row_bounds (tests/exact_util.c, fixed-point mpz) for
- *      the 3 rows of each of the first NG cases: the exact L, H, S.
- *   T1 throughput of cbx_transform_box over NC cases (in cache) and
- *   T2 over NB cases (a large array, out of cache when above the L3 size
- *      printed in the header; 192 bytes per case: map 96, box in 48,
- *      box out 48); the same cases' map and box arrays and a memcpy of the
- *      same number of bytes (in + out) are timed in the same run.
- *   T1b, T2b the same boxes through cbx_transform_boxes under one map (the
- *      first case's): 96 bytes per case (box in 48, box out 48), against a
- *      memcpy of those bytes.
- *   S  scene: NS instances (default NB / 4: 10^6 under make bench, 25000
- *      under make bench-smoke; N when NB is 0), each with its own map and
- *      box, in random order, with a mix of transform classes: 20% IDENTITY,
- *      35% TRANSLATE, 15% SCALE (+ translation), 10% PERMUTE (a 90-degree
- *      rotation, times a uniform scale half of the time, + translation),
- *      20% GENERAL (a random rotation with scales, as rows 1-6); boxes as
- *      rows 1-6.  Each instance is classified once (cbx_classify) when the
- *      scene is built (untimed) and its class stored.  Row S: the general
- *      kernel cbx_transform_box on every instance.
- *   Sc the same scene through cbx_transform_box_as with the stored class;
- *      its notes give the speed-up S / Sc (wall and CPU), the same two on
- *      the first NC instances (in cache; the many passes over the same
- *      NC instances let the branch predictor learn their class sequence,
- *      so that figure is optimistic: the NS figure, one pass over a large
- *      scene in random order, is the realistic one), and the check that no
- *      finite end is looser than row S's (infinite ends identical) over
- *      all NS.
+ * Rows (main table: every row against a classic round-to-nearest Arvo
+ * baseline run on the same inputs in the same rounds)
+ *   1   naive 8 corners, RN: each corner transformed as a point, min / max
+ *       (pbrt, Embree); tests/bench_ref.h ref_naive8.  Against row 2.
+ *   2   classic Arvo interval form, RN (cglm, Godot): ref_arvo_box, each
+ *       box under its own map.  Unsound (no widening).  The baseline of
+ *       rows 1, 3, 3p, 3t, 4-7.
+ *   3   cbx_transform_box, each box under its own map.
+ *   3p  cbx_transform_box_prep, each box under its own prepared map
+ *       (cbx_prepare, untimed): output bit-identical to row 3's.
+ *   3t  tight: cbx_transform_box_tight (every finite end the tightest
+ *       double, RD / RU of the exact end); its notes give, exactly (GMP,
+ *       MPFR), how many ends are not the tightest double (must be 0).
+ *   2a  ref_arvo_box with one map (the first case's) for every box: the
+ *       baseline of 3a-3bp.
+ *   3a  cbx_transform_box, that one map for every box.
+ *   3ap cbx_transform_box_prep, that map prepared once (untimed).
+ *   3b  cbx_transform_boxes(&a[0], in, out, N), one call.
+ *   3bp cbx_transform_boxes_prep, one call.  3ap, 3b and 3bp: output
+ *       bit-identical to row 3a's.
+ *   2f, 3f, 3fp      binary32: ref_arvo_boxf (tests/bench_ref.h),
+ *       cbx_transform_boxf and cbx_transform_box_prepf, each box under its
+ *       own map; 3fp bit-identical to 3f.
+ *   2af, 3af, 3afp, 3bf, 3bfp   binary32, one map for every box:
+ *       ref_arvo_boxf, cbx_transform_boxf, cbx_transform_box_prepf,
+ *       cbx_transform_boxesf, cbx_transform_boxes_prepf; the last three
+ *       bit-identical to 3af.
+ *   4   cbx_transform_cbox; inputs converted with cbx_box_to_cbox
+ *       (outward) before the timed loops.
+ *   5   classic Arvo center/half form, RN: ref_arvo_cbox on inputs
+ *       converted with c = (lo+hi)/2, h = (hi-lo)/2 in RN (untimed).
+ *   6a  sphere: cbx_sphere_box (exact dual-quadric bound t -+ sqrt(sum
+ *       m^2), outward) of the unit ball under the same N maps.
+ *   6b  sphere by Arvo: cbx_transform_box of [-1,1]^3 under the same maps
+ *       (sound, but the box of a rotated box); the notes give the mean of
+ *       vol(6b) / vol(6a) over the exact subset.
+ *   7   GMP exact: xu_row_bounds (tests/exact_util.c) for the 3 rows of
+ *       each of the first NG cases.
+ *   S-A, S, Sc   scene: NS instances (default NB / 4), each with its own
+ *       map and box, in random order, with a mix of transform classes: 20%
+ *       IDENTITY, 35% TRANSLATE, 15% SCALE (+ translation), 10% PERMUTE (a
+ *       90-degree rotation, times a uniform scale half of the time, +
+ *       translation), 20% GENERAL (as the main rows); boxes as the main
+ *       rows.  Each instance is classified once (cbx_classify) when the
+ *       scene is built (untimed).  S-A: ref_arvo_box on every instance
+ *       (the baseline); S: cbx_transform_box; Sc: cbx_transform_box_as
+ *       with the stored class.  The notes give the speed-up S / Sc and the
+ *       same on the first NC instances (in cache: repeated passes let the
+ *       branch predictor learn the class sequence, so that figure is
+ *       optimistic), and the check that no finite Sc end is looser than
+ *       S's (infinite ends identical) over all NS.
  *   S-ID, S-TR, S-SC, S-PE, S-GE  the instances of one class, copied
- *      contiguously (untimed), through cbx_transform_box_as with the stored
- *      class; the notes give cbx_transform_box on the same instances and
- *      the speed-up.
- *      Checked (untimed): every scene output (S, Sc) exactly against the
- *      exact image on the first NE instances (excess, containment), the 8
- *      corners in mpq on the first NG instances for Sc, and no Sc end looser
- *      than S's; any violation fails the run (make bench-smoke included).
+ *       contiguously (untimed), through cbx_transform_box_as, against
+ *       ref_arvo_box on the same instances; the notes give
+ *       cbx_transform_box on them and the speed-up.
+ *       Checked (untimed): S and Sc exactly on the first NE instances, the
+ *       8 corners of Sc in mpq on the first NG, no Sc end looser than S's.
+ * Throughput table (every row against a memcpy of the same bytes, in the
+ * same rounds)
+ *   M1, T1   NC cases (in cache), each with its own map: memcpy of 192
+ *       bytes per case (map 96, box in 48, box out 48), and
+ *       cbx_transform_box.
+ *   M2, T2   the same over NB cases (a large array, out of cache when above
+ *       the L3 size in the header: 768 MB under make bench).
+ *   M1b, T1a, T1b, T1p, T1f   NC boxes under one map (the first case's):
+ *       memcpy of 96 bytes per case (box in, box out), ref_arvo_box,
+ *       cbx_transform_boxes, cbx_transform_boxes_prep, and
+ *       cbx_transform_boxesf over 2 NC binary32 boxes (the same bytes).
+ *   M2b, T2a, T2b, T2p, T2f  the same over NB boxes (384 MB under make
+ *       bench).  Each certbox output is checked (untimed, one more run)
+ *       bit for bit against single cbx_transform_box(f) calls on every
+ *       case, and exactly on its first NE cases.
  *
  * Timing: clock_gettime(CLOCK_MONOTONIC) around one run; a run is P passes
- * over the whole array (P = max(1, C / N): a run makes about C calls, so
- * that it lasts milliseconds even for a small array).  One untimed warm-up
- * run, then R timed runs; ns per box = median run time / (P N).  The
- * baselines are static inline (as in the header-only libraries they stand
- * for) and compiled with the library's flags (-std=c99 -ffp-contract=off
- * -fno-fast-math -O2); certbox is an out-of-line call into libcertbox.a.
- * Dead-code elimination is defeated by writing every result to an output
- * array, by an opaque call (a volatile function pointer) after each pass,
- * and by checksumming the output array after each run into a volatile sink
- * (outside the timed region).
+ * over the row's array (P = max(1, C / N): about C calls, so that a run
+ * lasts milliseconds even for a small array).  The rows are timed in
+ * groups, a baseline and the rows measured against it: one untimed
+ * warm-up round, then R rounds, each running the baseline once and then
+ * each row of the group once, so that drift (frequency, load) hits the
+ * baseline and the rows alike.  ns per box = median over the rounds of
+ * run time / (P N); "vs baseline" = median over the rounds of the ratio
+ * of the row's run to the baseline's run of the same round (per box; in
+ * the throughput table per byte, and shown as the percentage of memcpy's
+ * bandwidth).  The same in the thread's CPU time
+ * (CLOCK_THREAD_CPUTIME_ID), which leaves out the time the thread was
+ * descheduled: on a loaded machine the figure to trust.  The baselines are
+ * static inline (as in the header-only libraries they stand for) and
+ * compiled with the same flags as the library; certbox is an out-of-line
+ * call into the library.  Dead-code elimination is defeated by writing
+ * every result to an output array, by an opaque call (a volatile function
+ * pointer) after each pass, and by checksumming the output array after
+ * each run into a volatile sink (outside the timed region).
  *
- * Columns
- *   ns/box       median over R runs (see above); "vs row 2" is its ratio
- *                to row 2's; "M boxes/s" is 1000 / (ns/box).
- *   CPU ns/box   the same median in the thread's CPU time
- *                (CLOCK_THREAD_CPUTIME_ID): it leaves out the time the
- *                thread was descheduled, so on a loaded machine it is the
- *                figure to trust; on an idle one the two agree.
+ * Exact columns
  *   excess       for each end of each axis of the first NE cases, computed
  *                exactly with GMP (exact_util): lower end L - lo, upper end
  *                hi - H, with L, H the exact bounds of the image of the
- *                original box, in units of u S + eta (u = 2^-53,
- *                eta = 2^-1074, S = |t| + sum_j |m_j| max(|lo_j|, |hi_j|)
- *                from xu_row_bounds); max and mean over all ends.  A
- *                center/half output (c, h) is the real box [c - h, c + h],
- *                taken exactly.  Negative = the end is inside the exact
- *                image.  For the sphere rows the exact ends are
- *                t -+ sqrt(sum_j m_j^2) (MPFR, 320 bits) and the unit is
- *                u (|t| + sqrt(sum_j m_j^2)) + eta.
+ *                input box, in units of u S + eta (u = 2^-53, eta =
+ *                2^-1074; binary32 rows: u = 2^-24, eta = 2^-149, the
+ *                exact image of the binary32 inputs), S = |t| + sum_j
+ *                |m_j| max(|lo_j|, |hi_j|) (xu_row_bounds); max and mean
+ *                over all ends.  A center/half output (c, h) is the real
+ *                box [c - h, c + h], taken exactly.  Negative = the end is
+ *                inside the exact image.  For the sphere rows the exact
+ *                ends are t -+ sqrt(sum_j m_j^2) (MPFR, 320 bits) and the
+ *                unit is u (|t| + sqrt(sum_j m_j^2)) + eta.
  *   ulps         the same gaps in ulps of the exact end (the spacing of
- *                binary64 at |L| or |H|), max and mean over the ends with
- *                no cancellation, |end| >= S / 4 as in test_sphere (where
- *                the end is small against S its ulp is small and the count
- *                grows like S / |end|, measuring the cancellation rather
- *                than the method); the number of ends left out is in the
- *                notes when nonzero.
+ *                the row's format at |L| or |H|), max and mean over the
+ *                ends with no cancellation, |end| >= S / 4 (where the end
+ *                is small against S its ulp is small and the count grows
+ *                like S / |end|, measuring the cancellation rather than
+ *                the method); the number of ends left out is in the notes.
  *   containment  ends that are NOT outside-or-equal the exact bound
  *                (lo > L or hi < H, decided exactly), out of all ends
- *                measured.  May be > 0 for rows 1, 2, 5; must be 0 for the
- *                certbox rows.
- *   proven       yes only for certbox functions (Frama-C/WP contract).
- *   vs memcpy    throughput rows: time / time of memcpy of the same bytes.
+ *                measured.  May be > 0 for the RN baselines; must be 0 for
+ *                the certbox rows.
+ *   digest       a checksum of the row's output (the same inputs in every
+ *                build): scripts/bench_table.py fails when a certbox row's
+ *                output differs between the builds.
  */
 #define _POSIX_C_SOURCE 200112L
 #include <errno.h>
@@ -151,13 +183,20 @@
 #ifndef BENCH_CC
 #define BENCH_CC "cc"
 #endif
-#ifdef __VERSION__
+#ifndef BENCH_LABEL /* the build's name in the merged table */
+#define BENCH_LABEL "-O2"
+#endif
+#if defined(__VERSION__) && defined(__GNUC__) && !defined(__clang__)
+#define BENCH_CC_VERSION "gcc " __VERSION__
+#elif defined(__VERSION__)
 #define BENCH_CC_VERSION __VERSION__
 #else
 #define BENCH_CC_VERSION "(unknown)"
 #endif
 
-#define MAXR 101
+#define MAXR 101    /* timed rounds                   */
+#define MAXROWS 96  /* rows, hidden ones included     */
+#define MAXG 12     /* rows per timing group          */
 #define SPH_PREC 320
 
 /* ---- defeating dead-code elimination --------------------------------- */
@@ -180,34 +219,53 @@ static uint64_t checksum(const void *p, size_t bytes)
 
 /* ---- the cases ------------------------------------------------------- */
 
+typedef struct ex_scratch { mpz_t gap, v, w, t; } ex_scratch;
+
 typedef struct bench_ctx {
-    size_t n, ngmp;
-    cbx_affine *a;
+    size_t n;
+    cbx_affine *a;            /* the N cases: maps and boxes              */
     cbx_box *in;
-    cbx_cbox *cin_cbx, *cin_rn;
-    cbx_box *o_naive, *o_arvo, *o_cbx, *o_sph, *o_sphbox;
-    cbx_box *o_tight, *o_batch, *o_cbx1;  /* rows 3t, 3b and 3b's loop    */
-    cbx_cbox *co_cbx, *co_rn;
-    long bad;               /* certbox calls that did not return CBX_OK  */
+    cbx_prepared *pa, p0;     /* cbx_prepare(a[k]), cbx_prepare(a[0])     */
+    cbx_cbox *cin_cbx, *cin_rn; /* the boxes as cboxes: outward, RN       */
+    cbx_affinef *af;          /* the N cases rounded to binary32          */
+    cbx_boxf *inf;
+    cbx_preparedf *paf, p0f;
+    long bad;                 /* certbox calls that did not return CBX_OK */
     xu_exact x;
+    ex_scratch e;
     uint64_t gmp_acc;
-    /* throughput arrays */
-    size_t nt;
+    /* throughput: NB cases (own map each) and 2 NB binary32 boxes (the
+     * bytes of NB binary64 boxes) under the first case's map */
     cbx_affine *ta;
     cbx_box *tin, *tout;
+    cbx_prepared tp0;
+    cbx_affinef taf0;
+    cbx_preparedf tpf0;
+    cbx_boxf *tinf, *toutf;
     unsigned char *mdst;
-    /* the scene rows (S): per instance its own map, box and stored class;
-     * p*: the same instances sorted by class (S-ID .. S-GE) */
+    /* the scene: per instance its own map, box and stored class; q*: the
+     * same instances sorted by class (rows S-ID .. S-GE) */
     size_t ns, ns_cnt[5], ns_off[6];
-    cbx_affine *sa, *pa;
-    cbx_box *sin, *so_g, *so_c, *pin, *po;
-    cbx_class *scls, *pcls;
-    int cur;                /* the class timed by k_cls_gen / k_cls_as    */
+    cbx_affine *sa, *qa;
+    cbx_box *sin, *qin, *qo;
+    cbx_class *scls, *qcls;
+    int cur;                  /* the class of the per-class kernels       */
 } bench_ctx;
 
 static double urand(xu_rng *r, double lo, double hi)
 {
     return lo + (hi - lo) * xu_rng_unit(r);
+}
+
+static void gen_box(xu_rng *r, cbx_box *b)
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        double c = urand(r, -1.0, 1.0) * ldexp(1.0, xu_rng_int(r, -4, 8));
+        double h = xu_rng_int(r, 0, 19) == 0 ? 0.0 : pow(2.0, urand(r, -12.0, 6.0));
+        b->lo[j] = c - h;
+        b->hi[j] = c + h;
+    }
 }
 
 static void gen_case(xu_rng *r, cbx_affine *a, cbx_box *b)
@@ -223,11 +281,36 @@ static void gen_case(xu_rng *r, cbx_affine *a, cbx_box *b)
         for (j = 0; j < 3; j++) a->m[i][j] = R[i][j] * s[j];
         a->m[i][3] = urand(r, -1.0, 1.0) * ldexp(1.0, xu_rng_int(r, -2, 10));
     }
+    gen_box(r, b);
+}
+
+/* binary64 <-> binary32 (to: rounded to nearest; back: exact) */
+static void affine_to_f(const cbx_affine *a, cbx_affinef *f)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++) f->m[i][j] = (float)a->m[i][j];
+}
+static void affine_from_f(const cbx_affinef *f, cbx_affine *a)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++) a->m[i][j] = f->m[i][j];
+}
+static void box_to_f(const cbx_box *b, cbx_boxf *f)
+{
+    int j;
     for (j = 0; j < 3; j++) {
-        double c = urand(r, -1.0, 1.0) * ldexp(1.0, xu_rng_int(r, -4, 8));
-        double h = xu_rng_int(r, 0, 19) == 0 ? 0.0 : pow(2.0, urand(r, -12.0, 6.0));
-        b->lo[j] = c - h;
-        b->hi[j] = c + h;
+        f->lo[j] = (float)b->lo[j];
+        f->hi[j] = (float)b->hi[j];
+    }
+}
+static void box_from_f(const cbx_boxf *f, cbx_box *b)
+{
+    int j;
+    for (j = 0; j < 3; j++) {
+        b->lo[j] = f->lo[j];
+        b->hi[j] = f->hi[j];
     }
 }
 
@@ -291,79 +374,86 @@ static void *xmalloc(size_t bytes)
     return p;
 }
 
-/* ---- kernels: one pass over the first n cases ------------------------ */
+/* ---- kernels: one pass over the first n cases into out ---------------- */
 
-typedef void (*kern_fn)(bench_ctx *b, size_t n);
+typedef void (*kern_fn)(bench_ctx *b, size_t n, void *out);
 
-static void k_naive(bench_ctx *b, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++) ref_naive8(&b->a[i], &b->in[i], &b->o_naive[i]);
-}
-static void k_arvo(bench_ctx *b, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++) ref_arvo_box(&b->a[i], &b->in[i], &b->o_arvo[i]);
-}
-static void k_cbx(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[i], &b->in[i], &b->o_cbx[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_tight(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++)
-        bad += cbx_transform_box_tight(&b->a[i], &b->in[i], &b->o_tight[i]) != CBX_OK;
-    b->bad += bad;
-}
-/* one map (the first case's) for the whole array: the batch form */
-static void k_batch(bench_ctx *b, size_t n)
-{
-    b->bad += cbx_transform_boxes(&b->a[0], b->in, b->o_batch, n) != CBX_OK;
-}
-static void k_cbx1(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[0], &b->in[i], &b->o_cbx1[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_cbxc(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_transform_cbox(&b->a[i], &b->cin_cbx[i], &b->co_cbx[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_arvoc(bench_ctx *b, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++) ref_arvo_cbox(&b->a[i], &b->cin_rn[i], &b->co_rn[i]);
-}
-static void k_sph(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_sphere_box(&b->a[i], &b->o_sph[i]) != CBX_OK;
-    b->bad += bad;
-}
+/* A loop of a baseline (no status). */
+#define REF_KERNEL(NAME, OUT_T, CALL)                          \
+    static void NAME(bench_ctx *b, size_t n, void *out)        \
+    {                                                          \
+        OUT_T *o = (OUT_T *)out;                               \
+        size_t i;                                              \
+        for (i = 0; i < n; i++) CALL;                          \
+    }
+/* A loop of single certbox calls, counting those not CBX_OK. */
+#define CBX_KERNEL(NAME, OUT_T, CALL)                          \
+    static void NAME(bench_ctx *b, size_t n, void *out)        \
+    {                                                          \
+        OUT_T *o = (OUT_T *)out;                               \
+        size_t i;                                              \
+        long bad = 0;                                          \
+        for (i = 0; i < n; i++) bad += (CALL) != CBX_OK;       \
+        b->bad += bad;                                         \
+    }
+/* One batch call over all n boxes. */
+#define BATCH_KERNEL(NAME, OUT_T, CALL)                        \
+    static void NAME(bench_ctx *b, size_t n, void *out)        \
+    {                                                          \
+        OUT_T *o = (OUT_T *)out;                               \
+        b->bad += (CALL) != CBX_OK;                            \
+    }
+
 static const cbx_box unit_box = {{-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}};
-static void k_sphbox(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->a[i], &unit_box, &b->o_sphbox[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_gmp(bench_ctx *b, size_t n)
+
+/* the main rows: own map per box, one map (a[0]) for every box */
+REF_KERNEL(k_naive, cbx_box, ref_naive8(&b->a[i], &b->in[i], &o[i]))
+REF_KERNEL(k_arvo, cbx_box, ref_arvo_box(&b->a[i], &b->in[i], &o[i]))
+CBX_KERNEL(k_cbx, cbx_box, cbx_transform_box(&b->a[i], &b->in[i], &o[i]))
+CBX_KERNEL(k_prep, cbx_box, cbx_transform_box_prep(&b->pa[i], &b->in[i], &o[i]))
+CBX_KERNEL(k_tight, cbx_box, cbx_transform_box_tight(&b->a[i], &b->in[i], &o[i]))
+REF_KERNEL(k_arvo1, cbx_box, ref_arvo_box(&b->a[0], &b->in[i], &o[i]))
+CBX_KERNEL(k_cbx1, cbx_box, cbx_transform_box(&b->a[0], &b->in[i], &o[i]))
+CBX_KERNEL(k_prep1, cbx_box, cbx_transform_box_prep(&b->p0, &b->in[i], &o[i]))
+BATCH_KERNEL(k_batch, cbx_box, cbx_transform_boxes(&b->a[0], b->in, o, n))
+BATCH_KERNEL(k_batchp, cbx_box, cbx_transform_boxes_prep(&b->p0, b->in, o, n))
+/* binary32 */
+REF_KERNEL(k_arvof, cbx_boxf, ref_arvo_boxf(&b->af[i], &b->inf[i], &o[i]))
+CBX_KERNEL(k_cbxf, cbx_boxf, cbx_transform_boxf(&b->af[i], &b->inf[i], &o[i]))
+CBX_KERNEL(k_prepf, cbx_boxf, cbx_transform_box_prepf(&b->paf[i], &b->inf[i], &o[i]))
+REF_KERNEL(k_arvo1f, cbx_boxf, ref_arvo_boxf(&b->af[0], &b->inf[i], &o[i]))
+CBX_KERNEL(k_cbx1f, cbx_boxf, cbx_transform_boxf(&b->af[0], &b->inf[i], &o[i]))
+CBX_KERNEL(k_prep1f, cbx_boxf, cbx_transform_box_prepf(&b->p0f, &b->inf[i], &o[i]))
+BATCH_KERNEL(k_batchf, cbx_boxf, cbx_transform_boxesf(&b->af[0], b->inf, o, n))
+BATCH_KERNEL(k_batchpf, cbx_boxf, cbx_transform_boxes_prepf(&b->p0f, b->inf, o, n))
+/* other forms */
+CBX_KERNEL(k_cbxc, cbx_cbox, cbx_transform_cbox(&b->a[i], &b->cin_cbx[i], &o[i]))
+REF_KERNEL(k_arvoc, cbx_cbox, ref_arvo_cbox(&b->a[i], &b->cin_rn[i], &o[i]))
+CBX_KERNEL(k_sph, cbx_box, cbx_sphere_box(&b->a[i], &o[i]))
+CBX_KERNEL(k_sphbox, cbx_box, cbx_transform_box(&b->a[i], &unit_box, &o[i]))
+/* throughput */
+CBX_KERNEL(k_tp, cbx_box, cbx_transform_box(&b->ta[i], &b->tin[i], &o[i]))
+REF_KERNEL(k_tp_arvo1, cbx_box, ref_arvo_box(&b->ta[0], &b->tin[i], &o[i]))
+BATCH_KERNEL(k_tp_batch, cbx_box, cbx_transform_boxes(&b->ta[0], b->tin, o, n))
+BATCH_KERNEL(k_tp_batchp, cbx_box, cbx_transform_boxes_prep(&b->tp0, b->tin, o, n))
+BATCH_KERNEL(k_tp_batchf, cbx_boxf, cbx_transform_boxesf(&b->taf0, b->tinf, o, n))
+/* the scene (every instance under its own map), and the instances of
+ * class b->cur (sorted copy; out = that class's part of b->qo) */
+REF_KERNEL(k_scene_arvo, cbx_box, ref_arvo_box(&b->sa[i], &b->sin[i], &o[i]))
+CBX_KERNEL(k_scene_gen, cbx_box, cbx_transform_box(&b->sa[i], &b->sin[i], &o[i]))
+CBX_KERNEL(k_scene_as, cbx_box, cbx_transform_box_as(&b->sa[i], b->scls[i], &b->sin[i], &o[i]))
+#define QI (b->ns_off[b->cur] + i)
+REF_KERNEL(k_cls_arvo, cbx_box, ref_arvo_box(&b->qa[QI], &b->qin[QI], &o[i]))
+CBX_KERNEL(k_cls_gen, cbx_box, cbx_transform_box(&b->qa[QI], &b->qin[QI], &o[i]))
+CBX_KERNEL(k_cls_as, cbx_box, cbx_transform_box_as(&b->qa[QI], b->qcls[QI], &b->qin[QI], &o[i]))
+#undef QI
+
+static void k_gmp(bench_ctx *b, size_t n, void *out)
 {
     size_t i;
     int r;
     uint64_t acc = 0;
+    (void)out;
     for (i = 0; i < n; i++)
         for (r = 0; r < 3; r++) {
             xu_row_bounds(&b->x, &b->a[i], &b->in[i], r);
@@ -371,61 +461,142 @@ static void k_gmp(bench_ctx *b, size_t n)
         }
     b->gmp_acc += acc;
 }
-static void k_tp(bench_ctx *b, size_t n)
+/* memcpy of the bytes of n cases: map, box in and box out (3), or the
+ * two boxes only (2), into b->mdst */
+static void k_memcpy3(bench_ctx *b, size_t n, void *out)
 {
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->ta[i], &b->tin[i], &b->tout[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_tp_batch(bench_ctx *b, size_t n)
-{
-    b->bad += cbx_transform_boxes(&b->ta[0], b->tin, b->tout, n) != CBX_OK;
-}
-/* the scene: every instance under its own map, general kernel / class kernel */
-static void k_scene_gen(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++) bad += cbx_transform_box(&b->sa[i], &b->sin[i], &b->so_g[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_scene_as(bench_ctx *b, size_t n)
-{
-    size_t i;
-    long bad = 0;
-    for (i = 0; i < n; i++)
-        bad += cbx_transform_box_as(&b->sa[i], b->scls[i], &b->sin[i], &b->so_c[i]) != CBX_OK;
-    b->bad += bad;
-}
-/* the instances of class b->cur only (sorted copy) */
-static void k_cls_gen(bench_ctx *b, size_t n)
-{
-    size_t i, o = b->ns_off[b->cur];
-    long bad = 0;
-    for (i = o; i < o + n; i++) bad += cbx_transform_box(&b->pa[i], &b->pin[i], &b->po[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_cls_as(bench_ctx *b, size_t n)
-{
-    size_t i, o = b->ns_off[b->cur];
-    long bad = 0;
-    for (i = o; i < o + n; i++)
-        bad += cbx_transform_box_as(&b->pa[i], b->pcls[i], &b->pin[i], &b->po[i]) != CBX_OK;
-    b->bad += bad;
-}
-static void k_memcpy_boxes(bench_ctx *b, size_t n)
-{
-    size_t nb = n * sizeof(cbx_box);
-    memcpy(b->mdst, b->tin, nb);
-    memcpy(b->mdst + nb, b->tout, nb);
-}
-static void k_memcpy(bench_ctx *b, size_t n)
-{
+    unsigned char *d = (unsigned char *)out;
     size_t na = n * sizeof(cbx_affine), nb = n * sizeof(cbx_box);
-    memcpy(b->mdst, b->ta, na);
-    memcpy(b->mdst + na, b->tin, nb);
-    memcpy(b->mdst + na + nb, b->tout, nb);
+    memcpy(d, b->ta, na);
+    memcpy(d + na, b->tin, nb);
+    memcpy(d + na + nb, b->tout, nb);
+}
+static void k_memcpy2(bench_ctx *b, size_t n, void *out)
+{
+    unsigned char *d = (unsigned char *)out;
+    size_t nb = n * sizeof(cbx_box);
+    memcpy(d, b->tin, nb);
+    memcpy(d + nb, b->tout, nb);
+}
+
+/* ---- rows and their timing ------------------------------------------- */
+
+typedef struct acc {
+    long ends, fails, nc_ends, cancel;
+    double max_u, sum_u, min_u, max_ulp, sum_ulp;
+} acc;
+
+typedef struct opt_acc { long ends, off; double max_off, sum_off; } opt_acc;
+
+enum { SEC_MAIN, SEC_TP };
+/* how a row's output is checked exactly */
+enum {
+    MK_NONE,
+    MK_BOX, MK_BOX1,   /* binary64 boxes, own map / a[0]                */
+    MK_BOXF, MK_BOXF1, /* binary32 boxes, own map / a[0]                */
+    MK_CBOX,           /* cboxes, own map                               */
+    MK_SPH,            /* rows 6a, 6b (measure_sphere)                  */
+    MK_SCN,            /* scene outputs, own map                        */
+    MK_GMP,            /* the exact reference                           */
+    MK_TP, MK_TP1, MK_TPF /* throughput (verify_tp): own map, ta[0],
+                             binary32 under taf0                       */
+};
+
+typedef struct row row;
+struct row {
+    const char *id, *name, *proven;
+    int sec, grp, isbase, hidden, plot;
+    int pcode;            /* 1 certbox, 0 RN baseline / memcpy, 2 exact   */
+    /* timing: passes x f(n cases) into out (n elements of esz bytes) */
+    kern_fn f;
+    size_t n, esz;
+    long passes;
+    void *out;
+    double unit;          /* the ratio is per case / unit (throughput:
+                             bytes in + out per case)                   */
+    int cur;
+    const row *base;      /* the group's baseline                        */
+    double ns, cpu;       /* medians, per case                           */
+    double rw, rc;        /* medians of the per-round ratios to base     */
+    /* checks */
+    int mk;
+    const row *same;      /* output must be bit-identical to this row's  */
+    long diff;            /* cases that are not                          */
+    long checked;         /* cases compared                              */
+    int want_opt;
+    acc ex;
+    opt_acc opt;
+    uint64_t digest;      /* of the output (0: none)                     */
+    char note[600];       /* facts (the same in every build)             */
+    char tnote[300];      /* timings (this build's)                      */
+};
+
+static row rows[MAXROWS];
+static int nrows;
+
+static void acc_init(acc *s)
+{
+    memset(s, 0, sizeof *s);
+    s->max_u = -HUGE_VAL;
+    s->min_u = HUGE_VAL;
+    s->max_ulp = -HUGE_VAL;
+}
+
+/* A row of group grp (isbase: its baseline), timed as `passes` passes of
+ * f over n cases into out (allocated here when 0); a certbox row unless
+ * marked otherwise (unsound()). */
+static row *add_row(int grp, int isbase, const char *id, const char *name, kern_fn f, size_t n,
+                    long passes, void *out, size_t esz, int mk)
+{
+    row *w;
+    if (nrows == MAXROWS) {
+        fprintf(stderr, "bench: more than %d rows\n", MAXROWS);
+        exit(2);
+    }
+    w = &rows[nrows++];
+    memset(w, 0, sizeof *w);
+    w->id = id;
+    w->name = name;
+    w->proven = "yes";
+    w->pcode = 1;
+    w->sec = SEC_MAIN;
+    w->grp = grp;
+    w->isbase = isbase;
+    w->f = f;
+    w->n = n;
+    w->passes = passes;
+    w->esz = esz;
+    w->out = out ? out : xmalloc(n * esz);
+    w->unit = 1.0;
+    w->mk = mk;
+    acc_init(&w->ex);
+    return w;
+}
+
+static row *unsound(row *w)
+{
+    w->proven = "no";
+    w->pcode = 0;
+    return w;
+}
+
+/* A throughput row: ratio per byte (bpc bytes in + out per case). */
+static row *add_tp(int grp, int isbase, const char *id, const char *name, kern_fn f, size_t n,
+                   long passes, void *out, size_t esz, size_t bpc, int mk)
+{
+    row *w = add_row(grp, isbase, id, name, f, n, passes, out, esz, mk);
+    w->sec = SEC_TP;
+    w->unit = (double)bpc;
+    if (mk == MK_NONE) unsound(w);
+    return w;
+}
+
+static row *find_row(const char *id)
+{
+    int i;
+    for (i = 0; i < nrows; i++)
+        if (!strcmp(rows[i].id, id)) return &rows[i];
+    return 0;
 }
 
 static double clock_ns(clockid_t id)
@@ -447,37 +618,70 @@ static int cmp_double(const void *p, const void *q)
     return (x > y) - (x < y);
 }
 
-/* Median ns per case of R runs of `passes` passes over n cases (wall
- * clock, CLOCK_MONOTONIC); *cpu: the same with the thread's CPU time.
- * out/bytes: the output to checksum after each run. */
-static double time_kernel(bench_ctx *b, kern_fn f, size_t n, long passes, int R,
-                          const void *out, size_t bytes, double *cpu)
+static double median(const double *v, int R)
 {
-    double t[MAXR], c[MAXR];
-    int r;
+    double s[MAXR];
+    memcpy(s, v, (size_t)R * sizeof s[0]);
+    qsort(s, (size_t)R, sizeof s[0], cmp_double);
+    return s[R / 2];
+}
+
+/* One run of a row: wall and CPU ns per case. */
+static void run_once(bench_ctx *b, const row *w, double *wall, double *cpu)
+{
+    double c0, t0, t1, c1;
     long p;
-    *cpu = -1.0;
-    if (n == 0) return -1.0;
-    for (p = 0; p < passes; p++) { /* warm-up run */
-        f(b, n);
+    b->cur = w->cur;
+    c0 = cpu_ns();
+    t0 = now_ns();
+    for (p = 0; p < w->passes; p++) {
+        w->f(b, w->n, w->out);
         bench_escape(b);
     }
-    for (r = 0; r < R; r++) {
-        double c0 = cpu_ns(), t0 = now_ns(), t1, c1;
-        for (p = 0; p < passes; p++) {
-            f(b, n);
-            bench_escape(b);
-        }
-        t1 = now_ns();
-        c1 = cpu_ns();
-        t[r] = (t1 - t0) / ((double)passes * (double)n);
-        c[r] = (c1 - c0) / ((double)passes * (double)n);
-        bench_sink ^= checksum(out, bytes) ^ b->gmp_acc;
+    t1 = now_ns();
+    c1 = cpu_ns();
+    *wall = (t1 - t0) / ((double)w->passes * (double)w->n);
+    *cpu = (c1 - c0) / ((double)w->passes * (double)w->n);
+    bench_sink ^= checksum(w->out, w->n * w->esz) ^ b->gmp_acc;
+}
+
+/* Time the rows of group g, interleaved: a warm-up round, then R rounds of
+ * (the baseline, then every other row of the group once). */
+static void time_group(bench_ctx *b, int g, int R)
+{
+    static double t[MAXG][MAXR], c[MAXG][MAXR];
+    double q[MAXR], s[MAXR], w0, c0;
+    row *m[MAXG];
+    int nm = 0, i, j, r;
+    for (i = 0; i < nrows; i++)
+        if (rows[i].grp == g && rows[i].isbase) m[nm++] = &rows[i];
+    if (nm != 1) {
+        if (nm == 0) return;
+        fprintf(stderr, "bench: group %d has %d baselines\n", g, nm);
+        exit(2);
     }
-    qsort(t, (size_t)R, sizeof t[0], cmp_double);
-    qsort(c, (size_t)R, sizeof c[0], cmp_double);
-    *cpu = c[R / 2];
-    return t[R / 2];
+    for (i = 0; i < nrows; i++) {
+        if (rows[i].grp != g || rows[i].isbase) continue;
+        if (nm == MAXG) {
+            fprintf(stderr, "bench: group %d has more than %d rows\n", g, MAXG);
+            exit(2);
+        }
+        m[nm++] = &rows[i];
+    }
+    for (j = 0; j < nm; j++) run_once(b, m[j], &w0, &c0);
+    for (r = 0; r < R; r++)
+        for (j = 0; j < nm; j++) run_once(b, m[j], &t[j][r], &c[j][r]);
+    for (j = 0; j < nm; j++) {
+        for (r = 0; r < R; r++) {
+            q[r] = (t[j][r] / m[j]->unit) / (t[0][r] / m[0]->unit);
+            s[r] = (c[j][r] / m[j]->unit) / (c[0][r] / m[0]->unit);
+        }
+        m[j]->base = m[0];
+        m[j]->ns = median(t[j], R);
+        m[j]->cpu = median(c[j], R);
+        m[j]->rw = median(q, R);
+        m[j]->rc = median(s, R);
+    }
 }
 
 static long passes_for(long calls, size_t n)
@@ -487,19 +691,6 @@ static long passes_for(long calls, size_t n)
 }
 
 /* ---- exact measurement ----------------------------------------------- */
-
-typedef struct acc {
-    long ends, fails, nc_ends, cancel;
-    double max_u, sum_u, min_u, max_ulp, sum_ulp;
-} acc;
-
-static void acc_init(acc *s)
-{
-    memset(s, 0, sizeof *s);
-    s->max_u = -HUGE_VAL;
-    s->min_u = HUGE_VAL;
-    s->max_ulp = -HUGE_VAL;
-}
 
 static void acc_add(acc *s, double units, int fail, int nocancel, double ulps)
 {
@@ -517,20 +708,19 @@ static void acc_add(acc *s, double units, int fail, int nocancel, double ulps)
     }
 }
 
-typedef struct ex_scratch { mpz_t gap, v, w, t; } ex_scratch;
-
-/* gap (scaled by 2^XU_SHIFT) in ulps of the exact end E (scaled). */
+/* gap (scaled by 2^XU_SHIFT) in ulps of the exact end E (scaled), in the
+ * current format (xu_fmt). */
 static double gap_ulps(const mpz_t gap, const mpz_t E)
 {
     long ee, eg, ue;
     double fg;
     if (mpz_sgn(gap) == 0) return 0.0;
     if (mpz_sgn(E) == 0) {
-        ue = -1074;
+        ue = -xu_fmt->emin;
     } else {
         (void)mpz_get_d_2exp(&ee, E); /* |E| in [2^(ee-1), 2^ee) */
-        ue = ee - XU_SHIFT - 53;
-        if (ue < -1074) ue = -1074;
+        ue = ee - XU_SHIFT - xu_fmt->p;
+        if (ue < -xu_fmt->emin) ue = -xu_fmt->emin;
     }
     fg = mpz_get_d_2exp(&eg, gap);
     return ldexp(fg, (int)(eg - XU_SHIFT - ue));
@@ -588,8 +778,6 @@ static int64_t ord_d(double d)
     return w < 0 ? -(w & INT64_MAX) : w;
 }
 
-typedef struct opt_acc { long ends, off; double max_off, sum_off; } opt_acc;
-
 /* How far lo and hi of a box output are from RD(L) and RU(H) (the last
  * xu_row_bounds), in doubles. */
 static void record_opt(xu_exact *x, opt_acc *o, double lo, double hi)
@@ -617,6 +805,44 @@ static void record_cbox(xu_exact *x, ex_scratch *e, acc *s, double c, double h)
     mpz_add(e->gap, e->v, e->w);          /* c + h */
     mpz_sub(e->gap, e->gap, x->H);
     record_end(x, e, s, x->H, x->S);
+}
+
+/* The 3 axes of the box output o of map a and box in (opt: also the
+ * distance of each finite end from the tightest double). */
+static void measure_case(bench_ctx *b, const cbx_affine *a, const cbx_box *in, const cbx_box *o,
+                         acc *s, opt_acc *opt)
+{
+    int r;
+    for (r = 0; r < 3; r++) {
+        xu_row_bounds(&b->x, a, in, r);
+        record_box(&b->x, &b->e, s, o->lo[r], o->hi[r]);
+        if (opt && isfinite(o->lo[r]) && isfinite(o->hi[r]))
+            record_opt(&b->x, opt, o->lo[r], o->hi[r]);
+    }
+}
+
+/* The first m outputs o[k] of boxes in[k] under maps[k] (one_map:
+ * maps[0] for every box), binary64 or binary32 (units of that format). */
+static void measure_boxes(bench_ctx *b, const cbx_affine *maps, int one_map, const cbx_box *in,
+                          const cbx_box *o, size_t m, acc *s, opt_acc *opt)
+{
+    size_t k;
+    for (k = 0; k < m; k++) measure_case(b, &maps[one_map ? 0 : k], &in[k], &o[k], s, opt);
+}
+static void measure_boxesf(bench_ctx *b, const cbx_affinef *maps, int one_map, const cbx_boxf *in,
+                           const cbx_boxf *o, size_t m, acc *s)
+{
+    size_t k;
+    cbx_affine a;
+    cbx_box bi, bo;
+    xu_set_format(&xu_binary32);
+    for (k = 0; k < m; k++) {
+        affine_from_f(&maps[one_map ? 0 : k], &a);
+        box_from_f(&in[k], &bi);
+        box_from_f(&o[k], &bo);
+        measure_case(b, &a, &bi, &bo, s, 0);
+    }
+    xu_set_format(&xu_binary64);
 }
 
 typedef struct sph_scratch { mpz_t s, m; mpfr_t R, T, E, D, G, U; } sph_scratch;
@@ -656,7 +882,9 @@ static void record_sph_end(xu_exact *x, sph_scratch *k, acc *s, double t, double
     acc_add(s, units, !ok, nocancel, ulps);
 }
 
-static void measure_sphere(bench_ctx *b, size_t ne, acc *sph, acc *sphbox, double *volratio)
+/* Rows 6a (o_sph) and 6b (o_sphbox) against the exact sphere bound. */
+static void measure_sphere(bench_ctx *b, size_t ne, const cbx_box *o_sph, const cbx_box *o_sphbox,
+                           acc *sph, acc *sphbox, double *volratio)
 {
     sph_scratch k;
     size_t i;
@@ -684,12 +912,11 @@ static void measure_sphere(bench_ctx *b, size_t ne, acc *sph, acc *sphbox, doubl
             mpfr_div_2ui(k.D, k.D, 53, MPFR_RNDN);
             mpfr_set_ui_2exp(k.U, 1, -1074, MPFR_RNDN);
             mpfr_add(k.D, k.D, k.U, MPFR_RNDN);
-            record_sph_end(&b->x, &k, sph, t, b->o_sph[i].lo[r], 0);
-            record_sph_end(&b->x, &k, sph, t, b->o_sph[i].hi[r], 1);
-            record_sph_end(&b->x, &k, sphbox, t, b->o_sphbox[i].lo[r], 0);
-            record_sph_end(&b->x, &k, sphbox, t, b->o_sphbox[i].hi[r], 1);
-            v *= (b->o_sphbox[i].hi[r] - b->o_sphbox[i].lo[r])
-                 / (b->o_sph[i].hi[r] - b->o_sph[i].lo[r]);
+            record_sph_end(&b->x, &k, sph, t, o_sph[i].lo[r], 0);
+            record_sph_end(&b->x, &k, sph, t, o_sph[i].hi[r], 1);
+            record_sph_end(&b->x, &k, sphbox, t, o_sphbox[i].lo[r], 0);
+            record_sph_end(&b->x, &k, sphbox, t, o_sphbox[i].hi[r], 1);
+            v *= (o_sphbox[i].hi[r] - o_sphbox[i].lo[r]) / (o_sph[i].hi[r] - o_sph[i].lo[r]);
         }
         vsum += v;
     }
@@ -698,33 +925,388 @@ static void measure_sphere(bench_ctx *b, size_t ne, acc *sph, acc *sphbox, doubl
     mpfr_clears(k.R, k.T, k.E, k.D, k.G, k.U, (mpfr_ptr)0);
 }
 
-/* ---- output ---------------------------------------------------------- */
-
-static FILE *md_file;
-
-static void out(const char *fmt, ...)
+/* A throughput row's output, untimed: one more run of its kernel, every
+ * case compared bit for bit with a single cbx_transform_box(f) call on the
+ * same map and box, and the first ne cases measured exactly. */
+static void verify_tp(bench_ctx *b, row *w, size_t ne)
 {
-    va_list ap, aq;
-    va_start(ap, fmt);
-    va_copy(aq, ap);
-    vprintf(fmt, ap);
-    if (md_file) vfprintf(md_file, fmt, aq);
-    va_end(aq);
-    va_end(ap);
+    size_t k, m = ne < w->n ? ne : w->n;
+    w->f(b, w->n, w->out);
+    w->digest = checksum(w->out, w->n * w->esz);
+    w->checked = (long)w->n;
+    if (w->mk == MK_TPF) {
+        const cbx_boxf *o = (const cbx_boxf *)w->out;
+        for (k = 0; k < w->n; k++) {
+            cbx_boxf r;
+            b->bad += cbx_transform_boxf(&b->taf0, &b->tinf[k], &r) != CBX_OK;
+            w->diff += memcmp(&r, &o[k], sizeof r) != 0;
+        }
+        measure_boxesf(b, &b->taf0, 1, b->tinf, o, m, &w->ex);
+    } else {
+        const cbx_box *o = (const cbx_box *)w->out;
+        int one = w->mk == MK_TP1;
+        for (k = 0; k < w->n; k++) {
+            cbx_box r;
+            b->bad += cbx_transform_box(&b->ta[one ? 0 : k], &b->tin[k], &r) != CBX_OK;
+            w->diff += memcmp(&r, &o[k], sizeof r) != 0;
+        }
+        measure_boxes(b, b->ta, one, b->tin, o, m, &w->ex, 0);
+    }
 }
 
-typedef struct row {
-    const char *id, *name, *proven;
-    double ns;           /* < 0: not timed */
-    double cpu;          /* the same in thread CPU time */
-    const acc *ex;       /* 0: no excess measured */
-    int exact_ref;       /* the GMP reference: excess 0 by definition */
-    double vs_memcpy;    /* < 0: none */
-    char note[512];
-    int proven_code;     /* for the plot: 1 proven, 0 not, 2 exact */
-    int plot;
-    int novs;            /* no "vs row 2" (other inputs than row 2's) */
-} row;
+/* The exact checks of one row on its first ne cases. */
+static void measure_row(bench_ctx *b, row *w, size_t ne)
+{
+    size_t k, m = ne < w->n ? ne : w->n;
+    opt_acc *opt = w->want_opt ? &w->opt : 0;
+    switch (w->mk) {
+    case MK_BOX: case MK_BOX1:
+        measure_boxes(b, b->a, w->mk == MK_BOX1, b->in, (const cbx_box *)w->out, m, &w->ex, opt);
+        break;
+    case MK_BOXF: case MK_BOXF1:
+        measure_boxesf(b, b->af, w->mk == MK_BOXF1, b->inf, (const cbx_boxf *)w->out, m, &w->ex);
+        break;
+    case MK_SCN:
+        measure_boxes(b, b->sa, 0, b->sin, (const cbx_box *)w->out, m, &w->ex, opt);
+        break;
+    case MK_CBOX:
+        for (k = 0; k < m; k++) {
+            const cbx_cbox *o = (const cbx_cbox *)w->out + k;
+            int r;
+            for (r = 0; r < 3; r++) {
+                xu_row_bounds(&b->x, &b->a[k], &b->in[k], r);
+                record_cbox(&b->x, &b->e, &w->ex, o->c[r], o->h[r]);
+            }
+        }
+        break;
+    case MK_TP: case MK_TP1: case MK_TPF:
+        verify_tp(b, w, ne);
+        break;
+    default:
+        break;
+    }
+}
+
+/* The scene's extra checks: every finite Sc end no looser than S's and
+ * infinite ends identical (all NS), the mpq corners of Sc (first ng), and
+ * the excess of both per class (first ne). */
+typedef struct scene_check {
+    long looser, tighter, fin, infdiff, corner_fail, corner_checked, mismatch;
+    acc pg[5], pc[5];   /* general / class kernel, per class */
+} scene_check;
+
+static void check_scene(bench_ctx *b, const cbx_box *so_g, const cbx_box *so_c, size_t ne,
+                        size_t ng, scene_check *sc)
+{
+    size_t k, m = ne < b->ns ? ne : b->ns;
+    int c, j, r;
+    for (c = 0; c < 5; c++) {
+        acc_init(&sc->pg[c]);
+        acc_init(&sc->pc[c]);
+    }
+    for (k = 0; k < b->ns; k++)
+        for (j = 0; j < 6; j++) {
+            double eg = j < 3 ? so_g[k].lo[j] : so_g[k].hi[j - 3];
+            double ec = j < 3 ? so_c[k].lo[j] : so_c[k].hi[j - 3];
+            if (!isfinite(eg) || !isfinite(ec)) {
+                sc->infdiff += memcmp(&eg, &ec, sizeof eg) != 0;
+            } else {
+                sc->fin++;
+                if (j < 3 ? ec < eg : ec > eg) sc->looser++;
+                else if (ec != eg) sc->tighter++;
+            }
+        }
+    for (k = 0; k < m; k++) {
+        c = (int)b->scls[k];
+        measure_case(b, &b->sa[k], &b->sin[k], &so_g[k], &sc->pg[c], 0);
+        measure_case(b, &b->sa[k], &b->sin[k], &so_c[k], &sc->pc[c], 0);
+        if (k < ng)
+            for (r = 0; r < 3; r++) {
+                sc->corner_checked++;
+                sc->corner_fail += xu_corner_failures(&b->x, &b->sa[k], &b->sin[k], r,
+                                                      so_c[k].lo[r], so_c[k].hi[r]) != 0;
+            }
+    }
+}
+
+/* ---- the rows -------------------------------------------------------- */
+
+typedef struct sizes {
+    size_t n, ne, ng, nc, nb, nsc;
+    long calls;
+    int R;
+    unsigned long seed;
+} sizes;
+
+/* the timing groups: a baseline and the rows timed against it */
+enum { G_BOX, G_ONE, G_F, G_F1, G_TC3, G_TB3, G_TC2, G_TB2, G_S, G_SC, G_CLS, NGRP = G_CLS + 5 };
+
+static const char *const cls_row_name[5] = {
+    "scene, GENERAL instances: `cbx_transform_box_as`",
+    "scene, PERMUTE instances: `cbx_transform_box_as`",
+    "scene, SCALE instances: `cbx_transform_box_as`",
+    "scene, TRANSLATE instances: `cbx_transform_box_as`",
+    "scene, IDENTITY instances: `cbx_transform_box_as`" };
+static const char *const cls_arvo_id[5] = { "S-GE-A", "S-PE-A", "S-SC-A", "S-TR-A", "S-ID-A" };
+static const char *const cls_gen_id[5] = { "S-GE-g", "S-PE-g", "S-SC-g", "S-TR-g", "S-ID-g" };
+
+static row *hide(row *w)
+{
+    w->hidden = 1;
+    return w;
+}
+
+static void define_rows(bench_ctx *b, const sizes *z)
+{
+    size_t n = z->n, bsz = sizeof(cbx_box), fsz = sizeof(cbx_boxf), csz = sizeof(cbx_cbox);
+    long P = passes_for(z->calls, n);
+    row *r3, *r3a, *r3f, *r3af, *w;
+    int c;
+
+    /* each box under its own map, against row 2 */
+    unsound(add_row(G_BOX, 0, "1", "naive 8 corners, RN (pbrt, Embree)", k_naive, n, P, 0, bsz, MK_BOX));
+    unsound(add_row(G_BOX, 1, "2", "Arvo interval, RN (cglm, Godot), own map per box", k_arvo, n, P, 0,
+                    bsz, MK_BOX));
+    r3 = add_row(G_BOX, 0, "3", "certbox `cbx_transform_box`, own map per box", k_cbx, n, P, 0, bsz,
+                 MK_BOX);
+    r3->want_opt = 1;
+    add_row(G_BOX, 0, "3p", "certbox `cbx_transform_box_prep`, own prepared map per box", k_prep, n,
+            P, 0, bsz, MK_BOX)->same = r3;
+    w = add_row(G_BOX, 0, "3t", "certbox tight `cbx_transform_box_tight`, own map per box", k_tight,
+                n, P, 0, bsz, MK_BOX);
+    w->want_opt = 1;
+    w->proven = "yes (EFTs trusted)";
+    /* one map for every box, against row 2a */
+    unsound(add_row(G_ONE, 1, "2a", "Arvo interval, RN, one map for every box", k_arvo1, n, P, 0, bsz,
+                    MK_BOX1));
+    r3a = add_row(G_ONE, 0, "3a", "certbox `cbx_transform_box`, one map for every box", k_cbx1, n, P,
+                  0, bsz, MK_BOX1);
+    add_row(G_ONE, 0, "3ap", "certbox `cbx_transform_box_prep`, one prepared map", k_prep1, n, P, 0,
+            bsz, MK_BOX1)->same = r3a;
+    add_row(G_ONE, 0, "3b", "certbox batch `cbx_transform_boxes`, one map", k_batch, n, P, 0, bsz,
+            MK_BOX1)->same = r3a;
+    add_row(G_ONE, 0, "3bp", "certbox batch `cbx_transform_boxes_prep`, one prepared map", k_batchp,
+            n, P, 0, bsz, MK_BOX1)->same = r3a;
+    /* binary32, against rows 2f and 2af */
+    unsound(add_row(G_F, 1, "2f", "binary32 Arvo interval, RN (`ref_arvo_boxf`), own map per box",
+                    k_arvof, n, P, 0, fsz, MK_BOXF));
+    r3f = add_row(G_F, 0, "3f", "binary32 certbox `cbx_transform_boxf`, own map per box", k_cbxf, n, P,
+                  0, fsz, MK_BOXF);
+    add_row(G_F, 0, "3fp", "binary32 certbox `cbx_transform_box_prepf`, own prepared map per box",
+            k_prepf, n, P, 0, fsz, MK_BOXF)->same = r3f;
+    unsound(add_row(G_F1, 1, "2af", "binary32 Arvo interval, RN, one map for every box", k_arvo1f, n,
+                    P, 0, fsz, MK_BOXF1));
+    r3af = add_row(G_F1, 0, "3af", "binary32 certbox `cbx_transform_boxf`, one map for every box",
+                   k_cbx1f, n, P, 0, fsz, MK_BOXF1);
+    add_row(G_F1, 0, "3afp", "binary32 certbox `cbx_transform_box_prepf`, one prepared map", k_prep1f,
+            n, P, 0, fsz, MK_BOXF1)->same = r3af;
+    add_row(G_F1, 0, "3bf", "binary32 certbox batch `cbx_transform_boxesf`, one map", k_batchf, n, P,
+            0, fsz, MK_BOXF1)->same = r3af;
+    add_row(G_F1, 0, "3bfp", "binary32 certbox batch `cbx_transform_boxes_prepf`, one prepared map",
+            k_batchpf, n, P, 0, fsz, MK_BOXF1)->same = r3af;
+    /* the other forms, against row 2 */
+    add_row(G_BOX, 0, "4", "certbox `cbx_transform_cbox`", k_cbxc, n, P, 0, csz, MK_CBOX);
+    unsound(add_row(G_BOX, 0, "5", "Arvo center/half, RN", k_arvoc, n, P, 0, csz, MK_CBOX));
+    add_row(G_BOX, 0, "6a", "sphere: certbox `cbx_sphere_box`", k_sph, n, P, 0, bsz, MK_SPH);
+    add_row(G_BOX, 0, "6b", "sphere: Arvo on [-1,1]^3 (`cbx_transform_box`)", k_sphbox, n, P, 0, bsz,
+            MK_SPH);
+    if (z->ng > 0) {
+        w = add_row(G_BOX, 0, "7", "GMP exact (`xu_row_bounds` x 3)", k_gmp, z->ng, 1, 0, 0, MK_GMP);
+        w->proven = "n/a (exact)";
+        w->pcode = 2;
+    }
+
+    /* throughput, against memcpy of the same bytes */
+    if (z->nb > 0) {
+        size_t nc = z->nc, nb = z->nb, pb3 = sizeof(cbx_affine) + 2 * bsz, pb2 = 2 * bsz;
+        long Pc = passes_for(z->calls, nc), Pb = passes_for(z->calls, nb);
+        add_tp(G_TC3, 1, "M1", "memcpy, in cache", k_memcpy3, nc, Pc, b->mdst, pb3, pb3, MK_NONE);
+        add_tp(G_TC3, 0, "T1", "`cbx_transform_box`, own map per case, in cache", k_tp, nc, Pc,
+               b->tout, bsz, pb3, MK_TP);
+        add_tp(G_TB3, 1, "M2", "memcpy, large array", k_memcpy3, nb, Pb, b->mdst, pb3, pb3, MK_NONE);
+        add_tp(G_TB3, 0, "T2", "`cbx_transform_box`, own map per case, large array", k_tp, nb, Pb,
+               b->tout, bsz, pb3, MK_TP);
+        add_tp(G_TC2, 1, "M1b", "memcpy, boxes only, in cache", k_memcpy2, nc, Pc, b->mdst, pb2, pb2,
+               MK_NONE);
+        add_tp(G_TC2, 0, "T1a", "Arvo interval, RN, one map, in cache", k_tp_arvo1, nc, Pc, b->tout,
+               bsz, pb2, MK_NONE);
+        add_tp(G_TC2, 0, "T1b", "batch `cbx_transform_boxes`, one map, in cache", k_tp_batch, nc, Pc,
+               b->tout, bsz, pb2, MK_TP1);
+        add_tp(G_TC2, 0, "T1p", "batch `cbx_transform_boxes_prep`, one map, in cache", k_tp_batchp,
+               nc, Pc, b->tout, bsz, pb2, MK_TP1);
+        add_tp(G_TC2, 0, "T1f", "binary32 batch `cbx_transform_boxesf`, one map, in cache",
+               k_tp_batchf, 2 * nc, Pc, b->toutf, fsz, 2 * fsz, MK_TPF);
+        add_tp(G_TB2, 1, "M2b", "memcpy, boxes only, large array", k_memcpy2, nb, Pb, b->mdst, pb2,
+               pb2, MK_NONE);
+        add_tp(G_TB2, 0, "T2a", "Arvo interval, RN, one map, large array", k_tp_arvo1, nb, Pb,
+               b->tout, bsz, pb2, MK_NONE);
+        add_tp(G_TB2, 0, "T2b", "batch `cbx_transform_boxes`, one map, large array", k_tp_batch, nb,
+               Pb, b->tout, bsz, pb2, MK_TP1);
+        add_tp(G_TB2, 0, "T2p", "batch `cbx_transform_boxes_prep`, one map, large array",
+               k_tp_batchp, nb, Pb, b->tout, bsz, pb2, MK_TP1);
+        add_tp(G_TB2, 0, "T2f", "binary32 batch `cbx_transform_boxesf`, one map, large array",
+               k_tp_batchf, 2 * nb, Pb, b->toutf, fsz, 2 * fsz, MK_TPF);
+        for (c = 0; c < nrows; c++)
+            if (rows[c].f == k_memcpy2 || rows[c].f == k_memcpy3) rows[c].proven = "-";
+    }
+
+    /* the scene, against Arvo on the same instances */
+    if (b->ns > 0) {
+        size_t ns = b->ns, nsc = z->nsc;
+        long Ps = passes_for(z->calls, ns), Psc = passes_for(z->calls, nsc);
+        unsound(add_row(G_S, 1, "S-A", "scene: Arvo interval, RN, on every instance", k_scene_arvo, ns,
+                        Ps, 0, bsz, MK_SCN));
+        add_row(G_S, 0, "S", "scene: `cbx_transform_box` on every instance (general kernel)",
+                k_scene_gen, ns, Ps, 0, bsz, MK_SCN);
+        add_row(G_S, 0, "Sc", "scene: `cbx_transform_box_as`, class stored at build time", k_scene_as,
+                ns, Ps, 0, bsz, MK_SCN);
+        /* the first nsc instances, in cache (notes of S and Sc) */
+        hide(unsound(add_row(G_SC, 1, "S-A'", "in cache: Arvo", k_scene_arvo, nsc, Psc, 0, bsz,
+                             MK_NONE)));
+        hide(add_row(G_SC, 0, "S'", "in cache: S", k_scene_gen, nsc, Psc, 0, bsz, MK_NONE));
+        hide(add_row(G_SC, 0, "Sc'", "in cache: Sc", k_scene_as, nsc, Psc, 0, bsz, MK_NONE));
+        for (c = 4; c >= 0; c--) {
+            size_t m = b->ns_cnt[c];
+            long Pm = passes_for(z->calls, m);
+            cbx_box *o = b->qo + b->ns_off[c];
+            if (m == 0) continue;
+            hide(unsound(add_row(G_CLS + c, 1, cls_arvo_id[c], "Arvo, RN, on them",
+                                 k_cls_arvo, m, Pm, o, bsz, MK_NONE)))->cur = c;
+            hide(add_row(G_CLS + c, 0, cls_gen_id[c], "`cbx_transform_box` on them", k_cls_gen, m, Pm, o,
+                         bsz, MK_NONE))->cur = c;
+            add_row(G_CLS + c, 0, scls_id[c], cls_row_name[c], k_cls_as, m, Pm, o, bsz, MK_NONE)->cur = c;
+        }
+    }
+}
+
+/* ---- notes ----------------------------------------------------------- */
+
+static void note_add(char *s, size_t sz, const char *fmt, ...)
+{
+    va_list ap;
+    size_t l = strlen(s);
+    if (l && l + 2 < sz) {
+        strcpy(s + l, "; ");
+        l += 2;
+    }
+    va_start(ap, fmt);
+    if (l < sz) vsnprintf(s + l, sz - l, fmt, ap);
+    va_end(ap);
+}
+#define NOTE(w, ...) note_add((w)->note, sizeof (w)->note, __VA_ARGS__)
+#define TNOTE(w, ...) note_add((w)->tnote, sizeof (w)->tnote, __VA_ARGS__)
+
+static void fmt_num(char *s, size_t sz, double v)
+{
+    if (v != v) snprintf(s, sz, "-");
+    else if (v == 0.0) snprintf(s, sz, "0");
+    else if (fabs(v) >= 1e5 || fabs(v) < 1e-2) snprintf(s, sz, "%.3g", v);
+    else snprintf(s, sz, "%.2f", v);
+}
+
+static void set_notes(const bench_ctx *b, const sizes *z, const scene_check *sc, double volratio)
+{
+    row *w, *v;
+    int c, i;
+    if ((w = find_row("3")))
+        NOTE(w, "%ld of %ld ends not the tightest double: max %.0f, mean %.2f doubles away",
+             w->opt.off, w->opt.ends, w->opt.max_off,
+             w->opt.ends ? w->opt.sum_off / (double)w->opt.ends : 0.0);
+    if ((w = find_row("3p"))) NOTE(w, "maps prepared by `cbx_prepare` (untimed)");
+    if ((w = find_row("3t")))
+        NOTE(w, "%s%ld of %ld ends not the tightest double (RD/RU of the exact end)%s: max %.0f, "
+                "mean %.2f ulps beyond it", w->opt.off ? "**" : "", w->opt.off, w->opt.ends,
+             w->opt.off ? "**" : "", w->opt.max_off,
+             w->opt.ends ? w->opt.sum_off / (double)w->opt.ends : 0.0);
+    if ((w = find_row("2a"))) NOTE(w, "`ref_arvo_box` with the first case's map for every box");
+    if ((w = find_row("3ap"))) NOTE(w, "that map prepared once by `cbx_prepare` (untimed)");
+    if ((w = find_row("2f")))
+        NOTE(w, "the %lu cases rounded to binary32 (untimed); binary32 rows: units of u S + eta "
+                "with u = 2^-24, eta = 2^-149, ulps of binary32", (unsigned long)z->n);
+    if ((w = find_row("3fp"))) NOTE(w, "maps prepared by `cbx_preparef` (untimed)");
+    if ((w = find_row("3afp"))) NOTE(w, "that map prepared once by `cbx_preparef` (untimed)");
+    for (i = 0; i < nrows; i++) {
+        w = &rows[i];
+        if (w->f == k_batch || w->f == k_batchp || w->f == k_batchf || w->f == k_batchpf)
+            NOTE(w, "one call over the %lu boxes", (unsigned long)w->n);
+    }
+    if ((w = find_row("4"))) {
+        NOTE(w, "input from `cbx_box_to_cbox` (untimed); excess against the original box, so it "
+                "includes the conversion's widening");
+        if ((v = find_row("5"))) TNOTE(w, "%.2fx row 5's time", w->ns / v->ns);
+    }
+    if ((w = find_row("5"))) NOTE(w, "input (lo+hi)/2, (hi-lo)/2 in RN (untimed)");
+    if ((w = find_row("6a")))
+        NOTE(w, "exact dual-quadric bound; units u(\\|t\\|+sqrt s)+eta");
+    if ((w = find_row("6b")))
+        NOTE(w, "vs the exact sphere bound; mean volume ratio to 6a: %.3f", volratio);
+    if ((w = find_row("7")))
+        NOTE(w, "first %lu cases; the reference", (unsigned long)w->n);
+    for (i = 0; i < nrows; i++) {
+        w = &rows[i];
+        if (w->sec != SEC_TP) continue;
+        if (w->f == k_memcpy3) NOTE(w, "memcpy of the bytes of map + box in + box out per case");
+        if (w->f == k_memcpy2) NOTE(w, "memcpy of the bytes of box in + box out per case");
+        if (w->f == k_tp_batchf)
+            NOTE(w, "2 x %lu binary32 boxes: the bytes of the binary64 rows", (unsigned long)(w->n / 2));
+        if (w->grp == G_TB3 || w->grp == G_TB2)
+            NOTE(w, "out of cache when above the L3 size in the header");
+    }
+    if (b->ns > 0) {
+        row *s = find_row("S"), *sc_ = find_row("Sc"), *sa1 = find_row("S-A'");
+        row *s1 = find_row("S'"), *sc1 = find_row("Sc'");
+        char mix[160];
+        size_t l = 0;
+        mix[0] = 0;
+        for (c = 4; c >= 0; c--) {
+            snprintf(mix + l, sizeof mix - l, "%s%s %.1f%%", c == 4 ? "" : ", ", scls_name[c],
+                     100.0 * (double)b->ns_cnt[c] / (double)b->ns);
+            l = strlen(mix);
+        }
+        NOTE(s, "%lu instances, own map and box each, random order: %s", (unsigned long)b->ns, mix);
+        TNOTE(s, "in cache (first %lu): %.2f ns/instance, Arvo %.2f", (unsigned long)s1->n, s1->ns,
+              sa1->ns);
+        NOTE(sc_, "%s%ld of %ld finite ends looser than S%s, %ld tighter, %ld infinite ends differ; "
+                  "mpq corners: %ld of %ld axes fail; %ld classes differ from the one meant",
+             sc->looser ? "**" : "", sc->looser, sc->fin, sc->looser ? "**" : "", sc->tighter,
+             sc->infdiff, sc->corner_fail, sc->corner_checked, sc->mismatch);
+        TNOTE(sc_, "**speed-up S/Sc %.2fx** (CPU %.2fx); in cache, repeated passes over %lu "
+                   "instances: %.2f ns/instance, %.2fx", s->ns / sc_->ns, s->cpu / sc_->cpu,
+              (unsigned long)sc1->n, sc1->ns, s1->ns / sc1->ns);
+        for (c = 4; c >= 0; c--) {
+            row *g = find_row(cls_gen_id[c]);
+            if (!(w = find_row(scls_id[c]))) continue;
+            w->ex = sc->pc[c];
+            NOTE(w, "%lu instances (contiguous); the general kernel's excess there: max %.3g, "
+                    "mean %.3g", (unsigned long)w->n, sc->pg[c].ends ? sc->pg[c].max_u : 0.0,
+                 sc->pg[c].ends ? sc->pg[c].sum_u / (double)sc->pg[c].ends : 0.0);
+            TNOTE(w, "`cbx_transform_box` on them: %.2f ns/instance (CPU %.2f), **speed-up %.2fx**",
+                  g->ns, g->cpu, g->ns / w->ns);
+        }
+    }
+}
+
+/* The notes every row gets from its checks. */
+static void check_notes(row *w)
+{
+    if (w->same)
+        NOTE(w, w->diff ? "**output differs from row %s's in %ld of %ld boxes**"
+                        : "output bit-identical to row %s's (%ld of %ld boxes)",
+             w->same->id, w->diff ? w->diff : w->checked, w->checked);
+    if (w->mk == MK_TP || w->mk == MK_TP1 || w->mk == MK_TPF)
+        NOTE(w, w->diff ? "**output differs from single `%s` calls in %ld of %ld cases**"
+                        : "output bit-identical to single `%s` calls (%ld of %ld cases)",
+             w->mk == MK_TPF ? "cbx_transform_boxf" : "cbx_transform_box",
+             w->diff ? w->diff : w->checked, w->checked);
+    if (w->ex.ends && w->ex.fails) {
+        char c[32];
+        fmt_num(c, sizeof c, w->ex.min_u);
+        NOTE(w, "worst end %s units inside", c);
+    }
+    if (w->ex.cancel) NOTE(w, "%ld ends with \\|end\\| < S/4 left out of ulps", w->ex.cancel);
+}
+
+/* ---- output ---------------------------------------------------------- */
 
 static void machine_line(char *model, size_t msz, int *cores)
 {
@@ -778,12 +1360,12 @@ static void cache_line(char *s, size_t sz)
     }
 }
 
-static void fmt_num(char *s, size_t sz, double v)
+static void first_line(const char *path, char *s, size_t sz)
 {
-    if (v != v) snprintf(s, sz, "-");
-    else if (v == 0.0) snprintf(s, sz, "0");
-    else if (fabs(v) >= 1e5 || fabs(v) < 1e-2) snprintf(s, sz, "%.3g", v);
-    else snprintf(s, sz, "%.2f", v);
+    FILE *f = fopen(path, "r");
+    if (!f) return;
+    if (fgets(s, (int)sz, f)) s[strcspn(s, "\n")] = 0;
+    fclose(f);
 }
 
 static void mkdir_p(const char *dir)
@@ -805,6 +1387,176 @@ static void mkdir_p(const char *dir)
     }
 }
 
+/* DIR/bench.tsv: "#meta" lines, a header, one line per visible row. */
+static int write_tsv(const char *dir, const sizes *z, const bench_ctx *b, const char *status)
+{
+    char path[1200], model[256], caches[200], load[128] = "(unknown)", when[64];
+    int cores, i;
+    time_t tt = time(0);
+    FILE *f;
+    mkdir_p(dir);
+    snprintf(path, sizeof path, "%s/bench.tsv", dir);
+    if (!(f = fopen(path, "w"))) {
+        fprintf(stderr, "bench: cannot write %s\n", path);
+        return -1;
+    }
+    machine_line(model, sizeof model, &cores);
+    cache_line(caches, sizeof caches);
+    first_line("/proc/loadavg", load, sizeof load);
+    strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", gmtime(&tt));
+    fprintf(f, "# certbox bench (tests/bench.c): one build's rows; scripts/bench_table.py renders them\n");
+    fprintf(f, "#meta\tlabel\t%s\n#meta\tcc\t%s\n#meta\tcc_version\t%s\n#meta\tflags\t%s\n",
+            BENCH_LABEL, BENCH_CC, BENCH_CC_VERSION, BENCH_FLAGS);
+    fprintf(f, "#meta\tmachine\t%s\n#meta\tcores\t%d\n#meta\tcaches\t%s\n#meta\tloadavg\t%s\n", model,
+            cores, caches, load);
+    fprintf(f, "#meta\tdate\t%s\n#meta\tversion\t%s\n#meta\tseed\t%lu\n#meta\tstatus\t%s\n", when,
+            CBX_VERSION_STRING, z->seed, status);
+    fprintf(f, "#meta\trounds\t%d\n#meta\tn\t%lu\n#meta\tpasses\t%ld\n#meta\tne\t%lu\n#meta\tng\t%lu\n",
+            z->R, (unsigned long)z->n, passes_for(z->calls, z->n), (unsigned long)z->ne,
+            (unsigned long)z->ng);
+    fprintf(f, "#meta\tnc\t%lu\n#meta\tpasses_c\t%ld\n#meta\tnb\t%lu\n#meta\tpasses_b\t%ld\n",
+            (unsigned long)z->nc, passes_for(z->calls, z->nc), (unsigned long)z->nb,
+            passes_for(z->calls, z->nb));
+    fprintf(f, "#meta\tns\t%lu\n#meta\tpasses_s\t%ld\n#meta\tnsc\t%lu\n#meta\tcalls\t%ld\n",
+            (unsigned long)b->ns, passes_for(z->calls, b->ns), (unsigned long)z->nsc, z->calls);
+    fprintf(f, "sec\tid\tname\tbase\tproven\tpcode\tplot\tns\tcpu\trw\trc\tends\tex_max\tex_mean\t"
+               "ulp_max\tulp_mean\tfails\tdigest\tcases\tunit\tnote\ttnote\n");
+    for (i = 0; i < nrows; i++) {
+        const row *w = &rows[i];
+        const acc *s = &w->ex;
+        if (w->hidden) continue;
+        fprintf(f, "%s\t%s\t%s\t%s\t%s\t%d\t%d\t%.6g\t%.6g\t%.6g\t%.6g\t", w->sec == SEC_TP ? "tp" : "main",
+                w->id, w->name, w->base ? (w->base->hidden ? w->base->name : w->base->id) : "-",
+                w->proven, w->pcode, w->plot, w->ns, w->cpu, w->rw, w->rc);
+        if (s->ends)
+            fprintf(f, "%ld\t%.6g\t%.6g\t%.6g\t%.6g\t%ld\t", s->ends, s->max_u, s->sum_u / (double)s->ends,
+                    s->nc_ends ? s->max_ulp : NAN, s->nc_ends ? s->sum_ulp / (double)s->nc_ends : NAN,
+                    s->fails);
+        else
+            fprintf(f, "0\tnan\tnan\tnan\tnan\t0\t");
+        fprintf(f, "%016llx\t%lu\t%g\t%s\t%s\n", (unsigned long long)w->digest, (unsigned long)w->n,
+                w->unit, w->note, w->tnote);
+    }
+    fclose(f);
+    fprintf(stderr, "bench: wrote %s (sink %llx)\n", path, (unsigned long long)bench_sink);
+    return 0;
+}
+
+/* The summary on stdout: one line per visible row. */
+static void print_summary(void)
+{
+    int i;
+    printf("bench (%s): ns per box, median of the rounds; x: vs the baseline (median of the "
+           "per-round ratios; throughput: per byte, memcpy = 1)\n", BENCH_LABEL);
+    for (i = 0; i < nrows; i++) {
+        const row *w = &rows[i];
+        char t[32], r[32], rc[32], cont[48];
+        if (w->hidden) continue;
+        fmt_num(t, sizeof t, w->ns);
+        fmt_num(r, sizeof r, w->rw);
+        fmt_num(rc, sizeof rc, w->rc);
+        if (w->ex.ends) snprintf(cont, sizeof cont, "%ld / %ld ends outside", w->ex.fails, w->ex.ends);
+        else snprintf(cont, sizeof cont, "-");
+        printf("  %-6s %9s ns  %6s x %-6s (CPU %6s x)  %-26s %s%s\n", w->id, t, r,
+               w->base ? w->base->hidden ? "Arvo" : w->base->id : "-", rc, cont, w->name,
+               w->diff ? "  **OUTPUT DIFFERS**" : "");
+    }
+}
+
+/* ---- inputs ---------------------------------------------------------- */
+
+/* The N cases, their cbox forms, binary32 copies and prepared maps. */
+static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
+{
+    xu_rng rng;
+    size_t k;
+    b->n = n;
+    b->a = xmalloc(n * sizeof *b->a);
+    b->in = xmalloc(n * sizeof *b->in);
+    b->pa = xmalloc(n * sizeof *b->pa);
+    b->cin_cbx = xmalloc(n * sizeof *b->cin_cbx);
+    b->cin_rn = xmalloc(n * sizeof *b->cin_rn);
+    b->af = xmalloc(n * sizeof *b->af);
+    b->inf = xmalloc(n * sizeof *b->inf);
+    b->paf = xmalloc(n * sizeof *b->paf);
+    rng.s = seed;
+    for (k = 0; k < n; k++) {
+        gen_case(&rng, &b->a[k], &b->in[k]);
+        if (cbx_box_to_cbox(&b->in[k], &b->cin_cbx[k]) != CBX_OK) b->bad++;
+        ref_box_to_cbox(&b->in[k], &b->cin_rn[k]);
+        cbx_prepare(&b->a[k], &b->pa[k]);
+        affine_to_f(&b->a[k], &b->af[k]);
+        box_to_f(&b->in[k], &b->inf[k]);
+        cbx_preparef(&b->af[k], &b->paf[k]);
+    }
+    b->p0 = b->pa[0];
+    b->p0f = b->paf[0];
+}
+
+/* The throughput arrays: nb cases, and 2 nb binary32 boxes. */
+static void setup_throughput(bench_ctx *b, size_t nb, unsigned long seed)
+{
+    xu_rng rng;
+    size_t k;
+    if (nb == 0) return;
+    b->ta = xmalloc(nb * sizeof *b->ta);
+    b->tin = xmalloc(nb * sizeof *b->tin);
+    b->tout = xmalloc(nb * sizeof *b->tout);
+    b->tinf = xmalloc(2 * nb * sizeof *b->tinf);
+    b->toutf = xmalloc(2 * nb * sizeof *b->toutf);
+    b->mdst = xmalloc(nb * (sizeof(cbx_affine) + 2 * sizeof(cbx_box)));
+    rng.s = seed + 1;
+    for (k = 0; k < nb; k++) gen_case(&rng, &b->ta[k], &b->tin[k]);
+    rng.s = seed + 3;
+    for (k = 0; k < 2 * nb; k++) {
+        cbx_box t;
+        gen_box(&rng, &t);
+        box_to_f(&t, &b->tinf[k]);
+    }
+    cbx_prepare(&b->ta[0], &b->tp0);
+    affine_to_f(&b->ta[0], &b->taf0);
+    cbx_preparef(&b->taf0, &b->tpf0);
+}
+
+/* The scene: ns instances, classified here (untimed), and their copy
+ * sorted by class.  Returns the number of classes that differ from the
+ * one meant. */
+static long setup_scene(bench_ctx *b, size_t ns, unsigned long seed)
+{
+    xu_rng rng;
+    size_t k, fill[5];
+    long mismatch = 0;
+    int c;
+    b->ns = ns;
+    if (ns == 0) return 0;
+    b->sa = xmalloc(ns * sizeof *b->sa);
+    b->sin = xmalloc(ns * sizeof *b->sin);
+    b->scls = xmalloc(ns * sizeof *b->scls);
+    b->qa = xmalloc(ns * sizeof *b->qa);
+    b->qin = xmalloc(ns * sizeof *b->qin);
+    b->qo = xmalloc(ns * sizeof *b->qo);
+    b->qcls = xmalloc(ns * sizeof *b->qcls);
+    rng.s = seed + 2;
+    for (k = 0; k < ns; k++) {
+        cbx_class meant = gen_scene_inst(&rng, &b->sa[k], &b->sin[k]);
+        b->scls[k] = cbx_classify(&b->sa[k]);
+        mismatch += b->scls[k] != meant;
+        b->ns_cnt[b->scls[k]]++;
+    }
+    b->ns_off[0] = 0;
+    for (c = 0; c < 5; c++) {
+        b->ns_off[c + 1] = b->ns_off[c] + b->ns_cnt[c];
+        fill[c] = b->ns_off[c];
+    }
+    for (k = 0; k < ns; k++) {
+        size_t d = fill[b->scls[k]]++;
+        b->qa[d] = b->sa[k];
+        b->qin[d] = b->sin[k];
+        b->qcls[d] = b->scls[k];
+    }
+    return mismatch;
+}
+
 static void usage(void)
 {
     fprintf(stderr, "usage: bench [-n N] [-r R] [-calls C] [-exact NE] [-gmp NG] "
@@ -814,538 +1566,110 @@ static void usage(void)
 
 int main(int argc, char **argv)
 {
-    size_t n = 20000, ne = 20000, ng = 2000, nc = 1000, nb = 4000000, nscene = (size_t)-1;
-    long calls = 200000;
-    int R = 11, i, cores;
-    unsigned long seed = 20240501;
+    sizes z;
+    size_t nscene = (size_t)-1;
     const char *dir = "build/bench-out";
+    static const char *const plotted[] = { "1", "2", "3", "3p", "3t", "3b", "2f", "3f",
+                                           "4", "5", "6a", "6b", "7" };
     bench_ctx b;
-    xu_rng rng;
-    size_t k;
-    char model[256], path[1200], loadavg[128] = "(unknown)";
-    row rows[32];
-    /* the scene rows */
-    acc ex_sg, ex_sc, ex_pc[5], ex_pg[5];
-    long sc_looser = 0, sc_tighter = 0, sc_fin = 0, sc_infdiff = 0, sc_corner_fail = 0;
-    long sc_corner_checked = 0, sc_mismatch = 0;
-    size_t nse = 0, nsc = 0;
-    double t_sg = -1, t_sc = -1, c_sg = -1, c_sc = -1, t_sgc = -1, t_scc = -1, c_sgc = -1, c_scc = -1;
-    double t_pg[5], t_pc[5], c_pg[5], c_pc[5];
-    int nrows = 0;
-    acc ex_box[7], ex_sph, ex_sphbox;   /* ex_box[5] tight, [6] batch */
-    opt_acc opt_tight, opt_cbx;
-    long batch_diff = 0;
+    scene_check sc;
     double volratio = 0.0;
-    double ns_arvo;
-    long bad_timed, conv_bad;
-    FILE *f;
+    long conv_bad, fails = 0, diffs = 0, tight_off = 0, scene_fails;
+    char status[300];
+    row *w;
+    int i;
 
+    z.n = 20000; z.ne = 20000; z.ng = 2000; z.nc = 1000; z.nb = 4000000;
+    z.calls = 200000; z.R = 11; z.seed = 20240501;
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : 0;
         if (!v) usage();
-        if (!strcmp(o, "-n")) n = strtoul(v, 0, 10);
-        else if (!strcmp(o, "-r")) R = atoi(v);
-        else if (!strcmp(o, "-calls")) calls = atol(v);
-        else if (!strcmp(o, "-exact")) ne = strtoul(v, 0, 10);
-        else if (!strcmp(o, "-gmp")) ng = strtoul(v, 0, 10);
-        else if (!strcmp(o, "-cache")) nc = strtoul(v, 0, 10);
-        else if (!strcmp(o, "-big")) nb = strtoul(v, 0, 10);
+        if (!strcmp(o, "-n")) z.n = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-r")) z.R = atoi(v);
+        else if (!strcmp(o, "-calls")) z.calls = atol(v);
+        else if (!strcmp(o, "-exact")) z.ne = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-gmp")) z.ng = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-cache")) z.nc = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-big")) z.nb = strtoul(v, 0, 10);
         else if (!strcmp(o, "-scene")) nscene = strtoul(v, 0, 10);
-        else if (!strcmp(o, "-seed")) seed = strtoul(v, 0, 10);
+        else if (!strcmp(o, "-seed")) z.seed = strtoul(v, 0, 10);
         else if (!strcmp(o, "-o")) dir = v;
         else usage();
         i++;
     }
-    if (n < 1 || R < 1 || R > MAXR || calls < 1) usage();
-    if (ne > n) ne = n;
-    if (ng > n) ng = n;
-    if (nb > 0 && nc > nb) nc = nb;
+    if (z.n < 1 || z.R < 1 || z.R > MAXR || z.calls < 1) usage();
+    if (z.ne > z.n) z.ne = z.n;
+    if (z.ng > z.n) z.ng = z.n;
+    if (z.nb > 0 && z.nc > z.nb) z.nc = z.nb;
+    if (z.nb > 0 && z.nc == 0) z.nc = 1;
 
-    /* ---- inputs ---- */
+    /* ---- inputs (untimed) ---- */
     memset(&b, 0, sizeof b);
-    b.n = n;
-    b.ngmp = ng;
-    b.a = xmalloc(n * sizeof *b.a);
-    b.in = xmalloc(n * sizeof *b.in);
-    b.cin_cbx = xmalloc(n * sizeof *b.cin_cbx);
-    b.cin_rn = xmalloc(n * sizeof *b.cin_rn);
-    b.o_naive = xmalloc(n * sizeof(cbx_box));
-    b.o_arvo = xmalloc(n * sizeof(cbx_box));
-    b.o_cbx = xmalloc(n * sizeof(cbx_box));
-    b.o_sph = xmalloc(n * sizeof(cbx_box));
-    b.o_sphbox = xmalloc(n * sizeof(cbx_box));
-    b.o_tight = xmalloc(n * sizeof(cbx_box));
-    b.o_batch = xmalloc(n * sizeof(cbx_box));
-    b.o_cbx1 = xmalloc(n * sizeof(cbx_box));
-    b.co_cbx = xmalloc(n * sizeof(cbx_cbox));
-    b.co_rn = xmalloc(n * sizeof(cbx_cbox));
-    rng.s = seed;
-    for (k = 0; k < n; k++) {
-        gen_case(&rng, &b.a[k], &b.in[k]);
-        if (cbx_box_to_cbox(&b.in[k], &b.cin_cbx[k]) != CBX_OK) b.bad++;
-        ref_box_to_cbox(&b.in[k], &b.cin_rn[k]);
-    }
+    memset(&sc, 0, sizeof sc);
     xu_init(&b.x);
-    b.nt = nb;
-    if (nb > 0) {
-        b.ta = xmalloc(nb * sizeof *b.ta);
-        b.tin = xmalloc(nb * sizeof *b.tin);
-        b.tout = xmalloc(nb * sizeof *b.tout);
-        b.mdst = xmalloc(nb * (sizeof(cbx_affine) + 2 * sizeof(cbx_box)));
-        rng.s = seed + 1;
-        for (k = 0; k < nb; k++) gen_case(&rng, &b.ta[k], &b.tin[k]);
-    }
-    /* the scene (rows S): classified here, untimed */
-    if (nscene == (size_t)-1) nscene = nb > 0 ? nb / 4 : n;
-    b.ns = nscene;
-    if (b.ns > 0) {
-        size_t fill[5];
-        int c;
-        b.sa = xmalloc(b.ns * sizeof *b.sa);
-        b.sin = xmalloc(b.ns * sizeof *b.sin);
-        b.so_g = xmalloc(b.ns * sizeof *b.so_g);
-        b.so_c = xmalloc(b.ns * sizeof *b.so_c);
-        b.scls = xmalloc(b.ns * sizeof *b.scls);
-        b.pa = xmalloc(b.ns * sizeof *b.pa);
-        b.pin = xmalloc(b.ns * sizeof *b.pin);
-        b.po = xmalloc(b.ns * sizeof *b.po);
-        b.pcls = xmalloc(b.ns * sizeof *b.pcls);
-        rng.s = seed + 2;
-        for (k = 0; k < b.ns; k++) {
-            cbx_class meant = gen_scene_inst(&rng, &b.sa[k], &b.sin[k]);
-            b.scls[k] = cbx_classify(&b.sa[k]);
-            sc_mismatch += b.scls[k] != meant;
-            b.ns_cnt[b.scls[k]]++;
-        }
-        b.ns_off[0] = 0;
-        for (c = 0; c < 5; c++) {
-            b.ns_off[c + 1] = b.ns_off[c] + b.ns_cnt[c];
-            fill[c] = b.ns_off[c];
-        }
-        for (k = 0; k < b.ns; k++) {
-            size_t d = fill[b.scls[k]]++;
-            b.pa[d] = b.sa[k];
-            b.pin[d] = b.sin[k];
-            b.pcls[d] = b.scls[k];
-        }
-    }
+    mpz_inits(b.e.gap, b.e.v, b.e.w, b.e.t, (mpz_ptr)0);
+    setup_cases(&b, z.n, z.seed);
+    setup_throughput(&b, z.nb, z.seed);
+    if (nscene == (size_t)-1) nscene = z.nb > 0 ? z.nb / 4 : z.n;
+    sc.mismatch = setup_scene(&b, nscene, z.seed);
+    z.nsc = z.nc < b.ns ? z.nc : b.ns;
+    if (z.nsc == 0) z.nsc = b.ns < 1000 ? b.ns : 1000;
     conv_bad = b.bad;
     b.bad = 0;
 
-    /* ---- timed rows ---- */
-    {
-        long P = passes_for(calls, n);
-        double t_naive, t_arvo, t_cbx, t_cbxc, t_arvoc, t_sph, t_sphbox, t_gmp;
-        double t_tight, t_batch, t_cbx1;
-        double t_tc = -1, t_mc = -1, t_tb = -1, t_mb = -1;
-        double t_tcb = -1, t_mcb = -1, t_tbb = -1, t_mbb = -1;
-        double c_naive, c_arvo, c_cbx, c_cbxc, c_arvoc, c_sph, c_sphbox, c_gmp;
-        double c_tight, c_batch, c_cbx1;
-        double c_tc = -1, c_mc = -1, c_tb = -1, c_mb = -1;
-        double c_tcb = -1, c_mcb = -1, c_tbb = -1, c_mbb = -1;
-        t_naive = time_kernel(&b, k_naive, n, P, R, b.o_naive, n * sizeof(cbx_box), &c_naive);
-        t_arvo = time_kernel(&b, k_arvo, n, P, R, b.o_arvo, n * sizeof(cbx_box), &c_arvo);
-        t_cbx = time_kernel(&b, k_cbx, n, P, R, b.o_cbx, n * sizeof(cbx_box), &c_cbx);
-        t_tight = time_kernel(&b, k_tight, n, P, R, b.o_tight, n * sizeof(cbx_box), &c_tight);
-        t_batch = time_kernel(&b, k_batch, n, P, R, b.o_batch, n * sizeof(cbx_box), &c_batch);
-        t_cbx1 = time_kernel(&b, k_cbx1, n, P, R, b.o_cbx1, n * sizeof(cbx_box), &c_cbx1);
-        t_cbxc = time_kernel(&b, k_cbxc, n, P, R, b.co_cbx, n * sizeof(cbx_cbox), &c_cbxc);
-        t_arvoc = time_kernel(&b, k_arvoc, n, P, R, b.co_rn, n * sizeof(cbx_cbox), &c_arvoc);
-        t_sph = time_kernel(&b, k_sph, n, P, R, b.o_sph, n * sizeof(cbx_box), &c_sph);
-        t_sphbox = time_kernel(&b, k_sphbox, n, P, R, b.o_sphbox, n * sizeof(cbx_box), &c_sphbox);
-        t_gmp = time_kernel(&b, k_gmp, ng, 1, R, b.o_arvo, 0, &c_gmp);
-        if (nb > 0) {
-            long Pc = passes_for(calls, nc), Pb = passes_for(calls, nb);
-            size_t pb = sizeof(cbx_affine) + 2 * sizeof(cbx_box);
-            t_tc = time_kernel(&b, k_tp, nc, Pc, R, b.tout, nc * sizeof(cbx_box), &c_tc);
-            t_mc = time_kernel(&b, k_memcpy, nc, Pc, R, b.mdst, nc * pb, &c_mc);
-            t_tb = time_kernel(&b, k_tp, nb, Pb, R, b.tout, nb * sizeof(cbx_box), &c_tb);
-            t_mb = time_kernel(&b, k_memcpy, nb, Pb, R, b.mdst, nb * pb, &c_mb);
-            t_tcb = time_kernel(&b, k_tp_batch, nc, Pc, R, b.tout, nc * sizeof(cbx_box), &c_tcb);
-            t_mcb = time_kernel(&b, k_memcpy_boxes, nc, Pc, R, b.mdst, nc * 2 * sizeof(cbx_box), &c_mcb);
-            t_tbb = time_kernel(&b, k_tp_batch, nb, Pb, R, b.tout, nb * sizeof(cbx_box), &c_tbb);
-            t_mbb = time_kernel(&b, k_memcpy_boxes, nb, Pb, R, b.mdst, nb * 2 * sizeof(cbx_box), &c_mbb);
-        }
-        if (b.ns > 0) {
-            long Ps = passes_for(calls, b.ns);
-            int c;
-            nsc = nc < b.ns ? nc : b.ns;
-            t_sg = time_kernel(&b, k_scene_gen, b.ns, Ps, R, b.so_g, b.ns * sizeof(cbx_box), &c_sg);
-            t_sc = time_kernel(&b, k_scene_as, b.ns, Ps, R, b.so_c, b.ns * sizeof(cbx_box), &c_sc);
-            t_sgc = time_kernel(&b, k_scene_gen, nsc, passes_for(calls, nsc), R, b.so_g,
-                                nsc * sizeof(cbx_box), &c_sgc);
-            t_scc = time_kernel(&b, k_scene_as, nsc, passes_for(calls, nsc), R, b.so_c,
-                                nsc * sizeof(cbx_box), &c_scc);
-            for (c = 0; c < 5; c++) {
-                size_t m = b.ns_cnt[c];
-                b.cur = c;
-                t_pg[c] = time_kernel(&b, k_cls_gen, m, passes_for(calls, m), R,
-                                      b.po + b.ns_off[c], m * sizeof(cbx_box), &c_pg[c]);
-                t_pc[c] = time_kernel(&b, k_cls_as, m, passes_for(calls, m), R,
-                                      b.po + b.ns_off[c], m * sizeof(cbx_box), &c_pc[c]);
-            }
-            /* the last full runs wrote every output: S into so_g, Sc into so_c
-             * (the in-cache runs rewrote the first nsc with the same values) */
-        }
-        bad_timed = b.bad;
-        ns_arvo = t_arvo;
+    /* ---- the rows, timed group by group ---- */
+    define_rows(&b, &z);
+    for (i = 0; i < (int)(sizeof plotted / sizeof plotted[0]); i++)
+        if ((w = find_row(plotted[i]))) w->plot = 1;
+    for (i = 0; i < NGRP; i++) time_group(&b, i, z.R);
 
-        /* ---- exact measurement (untimed), on the first ne cases ---- */
-        {
-            ex_scratch e;
-            int r;
-            mpz_inits(e.gap, e.v, e.w, e.t, (mpz_ptr)0);
-            for (i = 0; i < 7; i++) acc_init(&ex_box[i]);
-            memset(&opt_tight, 0, sizeof opt_tight);
-            memset(&opt_cbx, 0, sizeof opt_cbx);
-            for (k = 0; k < ne; k++)
-                for (r = 0; r < 3; r++) {
-                    xu_row_bounds(&b.x, &b.a[k], &b.in[k], r);
-                    record_box(&b.x, &e, &ex_box[0], b.o_naive[k].lo[r], b.o_naive[k].hi[r]);
-                    record_box(&b.x, &e, &ex_box[1], b.o_arvo[k].lo[r], b.o_arvo[k].hi[r]);
-                    record_box(&b.x, &e, &ex_box[2], b.o_cbx[k].lo[r], b.o_cbx[k].hi[r]);
-                    record_cbox(&b.x, &e, &ex_box[3], b.co_cbx[k].c[r], b.co_cbx[k].h[r]);
-                    record_cbox(&b.x, &e, &ex_box[4], b.co_rn[k].c[r], b.co_rn[k].h[r]);
-                    record_box(&b.x, &e, &ex_box[5], b.o_tight[k].lo[r], b.o_tight[k].hi[r]);
-                    if (isfinite(b.o_tight[k].lo[r]) && isfinite(b.o_tight[k].hi[r]))
-                        record_opt(&b.x, &opt_tight, b.o_tight[k].lo[r], b.o_tight[k].hi[r]);
-                    record_opt(&b.x, &opt_cbx, b.o_cbx[k].lo[r], b.o_cbx[k].hi[r]);
-                    /* the batch row: the first map for every box */
-                    xu_row_bounds(&b.x, &b.a[0], &b.in[k], r);
-                    record_box(&b.x, &e, &ex_box[6], b.o_batch[k].lo[r], b.o_batch[k].hi[r]);
-                }
-            for (k = 0; k < n; k++) /* bit-identical to the loop of row 3b's note */
-                batch_diff += memcmp(&b.o_batch[k], &b.o_cbx1[k], sizeof(cbx_box)) != 0;
-            /* the scene: never looser than the general kernel (all), exact
-             * excess and containment (first ne), mpq corners (first ng) */
-            acc_init(&ex_sg);
-            acc_init(&ex_sc);
-            for (i = 0; i < 5; i++) {
-                acc_init(&ex_pc[i]);
-                acc_init(&ex_pg[i]);
-            }
-            for (k = 0; k < b.ns; k++) {
-                int j;
-                for (j = 0; j < 6; j++) {
-                    double eg = j < 3 ? b.so_g[k].lo[j] : b.so_g[k].hi[j - 3];
-                    double ec = j < 3 ? b.so_c[k].lo[j] : b.so_c[k].hi[j - 3];
-                    if (!isfinite(eg) || !isfinite(ec)) {
-                        sc_infdiff += memcmp(&eg, &ec, sizeof eg) != 0;
-                    } else {
-                        sc_fin++;
-                        if (j < 3 ? ec < eg : ec > eg) sc_looser++;
-                        else if (ec != eg) sc_tighter++;
-                    }
-                }
-            }
-            nse = ne < b.ns ? ne : b.ns;
-            for (k = 0; k < nse; k++) {
-                int c = (int)b.scls[k];
-                for (r = 0; r < 3; r++) {
-                    xu_row_bounds(&b.x, &b.sa[k], &b.sin[k], r);
-                    record_box(&b.x, &e, &ex_sg, b.so_g[k].lo[r], b.so_g[k].hi[r]);
-                    record_box(&b.x, &e, &ex_sc, b.so_c[k].lo[r], b.so_c[k].hi[r]);
-                    record_box(&b.x, &e, &ex_pg[c], b.so_g[k].lo[r], b.so_g[k].hi[r]);
-                    record_box(&b.x, &e, &ex_pc[c], b.so_c[k].lo[r], b.so_c[k].hi[r]);
-                    if (k < ng) {
-                        sc_corner_checked++;
-                        sc_corner_fail += xu_corner_failures(&b.x, &b.sa[k], &b.sin[k], r,
-                                                             b.so_c[k].lo[r], b.so_c[k].hi[r]) != 0;
-                    }
-                }
-            }
-            mpz_clears(e.gap, e.v, e.w, e.t, (mpz_ptr)0);
-            acc_init(&ex_sph);
-            acc_init(&ex_sphbox);
-            measure_sphere(&b, ne, &ex_sph, &ex_sphbox, &volratio);
+    /* ---- checks (untimed): bit identity, then exact, on the first ne ---- */
+    for (i = 0; i < nrows; i++) {
+        w = &rows[i];
+        if (w->mk != MK_NONE && w->mk < MK_TP && w->esz) w->digest = checksum(w->out, w->n * w->esz);
+        if (w->same) {
+            const unsigned char *p = (const unsigned char *)w->out;
+            const unsigned char *q = (const unsigned char *)w->same->out;
+            size_t k;
+            w->checked = (long)w->n;
+            for (k = 0; k < w->n; k++) w->diff += memcmp(p + k * w->esz, q + k * w->esz, w->esz) != 0;
         }
-
-#define ADDROW(ID, NAME, NS, EX, PROV, PCODE) do { \
-            row *w_ = &rows[nrows++]; memset(w_, 0, sizeof *w_); \
-            w_->id = ID; w_->name = NAME; w_->ns = t_##NS; w_->cpu = c_##NS; w_->ex = EX; \
-            w_->proven = PROV; w_->proven_code = PCODE; w_->vs_memcpy = -1.0; \
-            w_->plot = 1; } while (0)
-        ADDROW("1", "naive 8 corners, RN (pbrt, Embree)", naive, &ex_box[0], "no", 0);
-        ADDROW("2", "Arvo interval, RN (cglm, Godot)", arvo, &ex_box[1], "no", 0);
-        ADDROW("3", "certbox `cbx_transform_box`", cbx, &ex_box[2], "yes", 1);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "%ld of %ld ends not the tightest double: max %.0f, mean %.2f doubles away",
-                 opt_cbx.off, opt_cbx.ends, opt_cbx.max_off,
-                 opt_cbx.ends ? opt_cbx.sum_off / (double)opt_cbx.ends : 0.0);
-        ADDROW("3t", "certbox tight `cbx_transform_box_tight`", tight, &ex_box[5], "yes (EFTs trusted)", 1);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "%s%ld of %ld ends not the tightest double (RD/RU of the exact end): max %.0f, "
-                 "mean %.2f ulps beyond it", opt_tight.off ? "**" : "", opt_tight.off,
-                 opt_tight.ends, opt_tight.max_off,
-                 opt_tight.ends ? opt_tight.sum_off / (double)opt_tight.ends : 0.0);
-        if (opt_tight.off) strcat(rows[nrows - 1].note, "**");
-        ADDROW("3b", "certbox batch `cbx_transform_boxes`", batch, &ex_box[6], "yes", 1);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "one call over the %lu boxes, all under the first map; a loop of "
-                 "`cbx_transform_box` over the same boxes and map: %.2f ns/box; output %s",
-                 (unsigned long)n, t_cbx1,
-                 batch_diff ? "DIFFERS from that loop's" : "bit-identical to that loop's");
-        (void)c_cbx1;
-        ADDROW("4", "certbox `cbx_transform_cbox`", cbxc, &ex_box[3], "yes", 1);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "input from `cbx_box_to_cbox` (untimed); excess against the original box, "
-                 "so it includes the conversion's widening");
-        ADDROW("5", "Arvo center/half, RN", arvoc, &ex_box[4], "no", 0);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "input (lo+hi)/2, (hi-lo)/2 in RN (untimed)");
-        ADDROW("6a", "sphere: certbox `cbx_sphere_box`", sph, &ex_sph, "yes", 1);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "exact dual-quadric bound; units u(\\|t\\|+sqrt s)+eta");
-        ADDROW("6b", "sphere: Arvo on [-1,1]^3 (`cbx_transform_box`)", sphbox, &ex_sphbox, "yes", 1);
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                 "vs the exact sphere bound; mean volume ratio to 6a: %.3f", volratio);
-        ADDROW("7", "GMP exact (`xu_row_bounds` x 3)", gmp, (const acc *)0, "n/a (exact)", 2);
-        rows[nrows - 1].exact_ref = 1;
-        snprintf(rows[nrows - 1].note, sizeof rows[0].note, "first %lu cases; the reference",
-                 (unsigned long)ng);
-        if (nb > 0) {
-            size_t pb = sizeof(cbx_affine) + 2 * sizeof(cbx_box);
-            ADDROW("T1", "throughput `cbx_transform_box`, in cache", tc, (const acc *)0, "yes", 1);
-            rows[nrows - 1].plot = 0;
-            rows[nrows - 1].vs_memcpy = t_tc / t_mc;
-            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                     "%lu cases, %.0f KB in+out; memcpy %.2f ns/case (%.1f GB/s)",
-                     (unsigned long)nc, (double)(nc * pb) / 1e3, t_mc, (double)pb / t_mc);
-            (void)c_mc;
-            ADDROW("T2", "throughput `cbx_transform_box`, large array", tb, (const acc *)0, "yes", 1);
-            rows[nrows - 1].plot = 0;
-            rows[nrows - 1].vs_memcpy = t_tb / t_mb;
-            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                     "%lu cases, %.0f MB in+out (out of cache if above L3); memcpy %.2f ns/case (%.1f GB/s)",
-                     (unsigned long)nb, (double)(nb * pb) / 1e6, t_mb, (double)pb / t_mb);
-            (void)c_mb;
-            ADDROW("T1b", "throughput `cbx_transform_boxes`, in cache", tcb, (const acc *)0, "yes", 1);
-            rows[nrows - 1].plot = 0;
-            rows[nrows - 1].vs_memcpy = t_tcb / t_mcb;
-            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                     "one call over the T1 boxes under one map; %lu cases, %.0f KB in+out; "
-                     "memcpy %.2f ns/case (%.1f GB/s)", (unsigned long)nc,
-                     (double)(nc * 2 * sizeof(cbx_box)) / 1e3, t_mcb,
-                     (double)(2 * sizeof(cbx_box)) / t_mcb);
-            (void)c_mcb;
-            ADDROW("T2b", "throughput `cbx_transform_boxes`, large array", tbb, (const acc *)0, "yes", 1);
-            rows[nrows - 1].plot = 0;
-            rows[nrows - 1].vs_memcpy = t_tbb / t_mbb;
-            snprintf(rows[nrows - 1].note, sizeof rows[0].note,
-                     "one call over the T2 boxes under one map; %lu cases, %.0f MB in+out; "
-                     "memcpy %.2f ns/case (%.1f GB/s)", (unsigned long)nb,
-                     (double)(nb * 2 * sizeof(cbx_box)) / 1e6, t_mbb,
-                     (double)(2 * sizeof(cbx_box)) / t_mbb);
-            (void)c_mbb;
-        }
-        if (b.ns > 0) {
-            row *w;
-            int c;
-            char mix[160];
-            size_t l = 0;
-            mix[0] = 0;
-            for (c = 4; c >= 0; c--) {
-                snprintf(mix + l, sizeof mix - l, "%s%s %.1f%%", c == 4 ? "" : ", ", scls_name[c],
-                         100.0 * (double)b.ns_cnt[c] / (double)b.ns);
-                l = strlen(mix);
-            }
-            w = &rows[nrows++];
-            memset(w, 0, sizeof *w);
-            w->id = "S";
-            w->name = "scene: `cbx_transform_box` on every instance (general kernel)";
-            w->ns = t_sg; w->cpu = c_sg; w->ex = &ex_sg; w->proven = "yes"; w->proven_code = 1;
-            w->vs_memcpy = -1.0; w->novs = 1;
-            snprintf(w->note, sizeof w->note, "%lu instances, own map and box each, random order: "
-                     "%s; in cache (first %lu): %.2f ns/instance", (unsigned long)b.ns, mix,
-                     (unsigned long)nsc, t_sgc);
-            w = &rows[nrows++];
-            memset(w, 0, sizeof *w);
-            w->id = "Sc";
-            w->name = "scene: `cbx_transform_box_as`, class stored at build time";
-            w->ns = t_sc; w->cpu = c_sc; w->ex = &ex_sc; w->proven = "yes"; w->proven_code = 1;
-            w->vs_memcpy = -1.0; w->novs = 1;
-            snprintf(w->note, sizeof w->note, "**speed-up S/Sc %.2fx** (CPU %.2fx; in cache, "
-                     "repeated passes over %lu instances: %.2f ns/instance, %.2fx); %s%ld of %ld finite ends looser than S%s, %ld tighter, "
-                     "%ld infinite ends differ; mpq corners: %ld of %ld axes fail; %ld classes "
-                     "differ from the one meant", t_sg / t_sc, c_sg / c_sc, (unsigned long)nsc, t_scc,
-                     t_sgc / t_scc,
-                     sc_looser ? "**" : "", sc_looser, sc_fin, sc_looser ? "**" : "", sc_tighter,
-                     sc_infdiff, sc_corner_fail, sc_corner_checked, sc_mismatch);
-            for (c = 4; c >= 0; c--) {
-                static char names[5][96];
-                acc *pg = &ex_pg[c];
-                if (b.ns_cnt[c] == 0) continue;
-                w = &rows[nrows++];
-                memset(w, 0, sizeof *w);
-                snprintf(names[c], sizeof names[c], "scene, %s instances: `cbx_transform_box_as`",
-                         scls_name[c]);
-                w->id = scls_id[c];
-                w->name = names[c];
-                w->ns = t_pc[c]; w->cpu = c_pc[c]; w->ex = &ex_pc[c]; w->proven = "yes";
-                w->proven_code = 1; w->vs_memcpy = -1.0; w->novs = 1;
-                snprintf(w->note, sizeof w->note, "%lu instances (contiguous); `cbx_transform_box` "
-                         "on them: %.2f ns/instance (CPU %.2f), **speed-up %.2fx**; general "
-                         "kernel's excess there: max %.3g, mean %.3g", (unsigned long)b.ns_cnt[c],
-                         t_pg[c], c_pg[c], t_pg[c] / t_pc[c], pg->ends ? pg->max_u : 0.0,
-                         pg->ends ? pg->sum_u / (double)pg->ends : 0.0);
-            }
-        }
-#undef ADDROW
-
-        /* ---- the table ---- */
-        mkdir_p(dir);
-        snprintf(path, sizeof path, "%s/bench.md", dir);
-        md_file = fopen(path, "w");
-        if (!md_file) fprintf(stderr, "bench: cannot write %s\n", path);
-        machine_line(model, sizeof model, &cores);
-        f = fopen("/proc/loadavg", "r");
-        if (f) {
-            if (fgets(loadavg, sizeof loadavg, f)) {
-                size_t l = strlen(loadavg);
-                if (l && loadavg[l - 1] == '\n') loadavg[l - 1] = 0;
-            }
-            fclose(f);
-        }
-        {
-            time_t tt = time(0);
-            char when[64];
-            strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", gmtime(&tt));
-            out("# certbox benchmark (tests/bench.c)\n\n");
-            char caches[200];
-            cache_line(caches, sizeof caches);
-            out("- machine: %s, %d cores%s%s; load average at the end: %s\n", model, cores,
-                caches[0] ? "; " : "", caches, loadavg);
-            out("- compiler: %s (%s), flags: `%s`\n", BENCH_CC, BENCH_CC_VERSION, BENCH_FLAGS);
-            out("- certbox %s; %s; seed %lu\n", CBX_VERSION_STRING, when, seed);
-            out("- timing: median of %d runs (after one warm-up run); a run = %ld passes over "
-                "%lu cases (throughput: %ld passes over %lu, %ld over %lu); rows 1-6 on the same "
-                "%lu random cases, row 7 on the first %lu\n",
-                R, P, (unsigned long)n, passes_for(calls, nc), (unsigned long)nc,
-                passes_for(calls, nb), (unsigned long)nb, (unsigned long)n, (unsigned long)ng);
-            if (b.ns > 0)
-                out("- scene rows S*: %lu instances (own map and box each, classified at build "
-                    "time, untimed); a run = %ld pass(es) over them (per-class rows: max(1, %ld / "
-                    "count) passes over that class's instances; in cache: %ld over the first %lu); "
-                    "excess on the first %lu instances, mpq corners of Sc on the first %lu\n",
-                    (unsigned long)b.ns, passes_for(calls, b.ns), calls, passes_for(calls, nsc),
-                    (unsigned long)nsc, (unsigned long)nse,
-                    (unsigned long)(ng < b.ns ? ng : b.ns));
-            out("- excess and containment: exact (GMP, MPFR for spheres) on the first %lu cases "
-                "(%lu ends per row); units of u S + eta (u = 2^-53, eta = 2^-1074); ulps of the "
-                "exact end on the ends with \\|end\\| >= S/4\n\n", (unsigned long)ne,
-                (unsigned long)(6 * ne));
-        }
-        out("| # | method | ns/box | vs row 2 | M boxes/s | CPU ns/box | max excess | mean excess "
-            "| max ulps | mean ulps | containment failures | proven | vs memcpy | notes |\n");
-        out("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---|\n");
-        for (i = 0; i < nrows; i++) {
-            row *w = &rows[i];
-            char c1[32], c2[32], c3[32], c4[32], c5[32], c6[32], c7[32], c8[32], c9[64], c10[32];
-            char note[800];
-            fmt_num(c1, sizeof c1, w->ns);
-            if (w->ns > 0 && ns_arvo > 0 && !(w->id[0] == 'T') && !w->novs) fmt_num(c2, sizeof c2, w->ns / ns_arvo);
-            else snprintf(c2, sizeof c2, "-");
-            fmt_num(c3, sizeof c3, w->ns > 0 ? 1e3 / w->ns : NAN);
-            fmt_num(c8, sizeof c8, w->cpu > 0 ? w->cpu : NAN);
-            snprintf(note, sizeof note, "%s", w->note);
-            if (w->ex && w->ex->ends) {
-                const acc *s = w->ex;
-                fmt_num(c4, sizeof c4, s->max_u);
-                fmt_num(c5, sizeof c5, s->sum_u / (double)s->ends);
-                fmt_num(c6, sizeof c6, s->nc_ends ? s->max_ulp : NAN);
-                fmt_num(c7, sizeof c7, s->nc_ends ? s->sum_ulp / (double)s->nc_ends : NAN);
-                snprintf(c9, sizeof c9, "%ld / %ld", s->fails, s->ends);
-                if (s->fails) {
-                    char c[32];
-                    size_t l = strlen(note);
-                    fmt_num(c, sizeof c, s->min_u);
-                    snprintf(note + l, sizeof note - l, "%sworst end %s units inside",
-                             l ? "; " : "", c);
-                }
-                if (s->cancel) {
-                    size_t l = strlen(note);
-                    snprintf(note + l, sizeof note - l, "%s%ld ends with \\|end\\| < S/4 left out of ulps",
-                             l ? "; " : "", s->cancel);
-                }
-            } else if (w->exact_ref) {
-                snprintf(c4, sizeof c4, "0");
-                snprintf(c5, sizeof c5, "0");
-                snprintf(c6, sizeof c6, "0");
-                snprintf(c7, sizeof c7, "0");
-                snprintf(c9, sizeof c9, "0 (exact)");
-            } else {
-                snprintf(c4, sizeof c4, "-");
-                snprintf(c5, sizeof c5, "-");
-                snprintf(c6, sizeof c6, "-");
-                snprintf(c7, sizeof c7, "-");
-                snprintf(c9, sizeof c9, "-");
-            }
-            if (w->vs_memcpy > 0) snprintf(c10, sizeof c10, "%.2f", w->vs_memcpy);
-            else snprintf(c10, sizeof c10, "-");
-            out("| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
-                w->id, w->name, c1, c2, c3, c8, c4, c5, c6, c7, c9, w->proven, c10, note);
-        }
-        if (conv_bad)
-            out("\n**%ld `cbx_box_to_cbox` calls did not return CBX_OK**\n", conv_bad);
-        if (bad_timed)
-            out("\n**%ld certbox calls did not return CBX_OK** (inputs should all be in the domain)\n",
-                bad_timed);
-        out("\nmax / mean excess: signed (negative = inside the exact image); a proven row "
-            "must have 0 containment failures.  Measured once; timings vary with load.\n\n");
-        if (md_file) fclose(md_file);
-
-        /* ---- bench.dat for scripts/bench.gp ---- */
-        snprintf(path, sizeof path, "%s/bench.dat", dir);
-        f = fopen(path, "w");
-        if (!f) {
-            fprintf(stderr, "bench: cannot write %s\n", path);
-        } else {
-            fprintf(f, "# certbox bench (tests/bench.c), for scripts/bench.gp: one data block\n"
-                       "# per plotted row (blocks separated by two blank lines), each a header\n"
-                       "# line (its 6th field is the row's title) and one data line.\n");
-            fprintf(f, "# machine: %s, %d cores; %s\n", model, cores, BENCH_CC_VERSION);
-            fprintf(f, "# columns: row ns_per_box max_excess y_plotted proven(1 yes, 0 no, 2 exact) label\n");
-            fprintf(f, "# y_plotted: max excess, floored at 0.01 for the log scale (exact: 0)\n");
-            for (i = 0; i < nrows; i++) {
-                row *w = &rows[i];
-                double mx = w->ex && w->ex->ends ? w->ex->max_u : 0.0;
-                double y = mx < 0.01 ? 0.01 : mx;
-                char lab[200];
-                size_t p = 0;
-                const char *q;
-                if (!w->plot) continue;
-                for (q = w->name; *q && p + 1 < sizeof lab; q++)
-                    if (*q != '`' && *q != '"') lab[p++] = *q;
-                lab[p] = 0;
-                fprintf(f, "\n\nrow ns_per_box max_excess y_plotted proven \"%s: %s%s\"\n", w->id, lab,
-                        w->proven_code == 1 ? " [proven]" : w->proven_code == 2 ? " [exact]" : "");
-                fprintf(f, "%s %.6g %.6g %.6g %d \"%s\"\n", w->id, w->ns, mx, y, w->proven_code, w->id);
-            }
-            fclose(f);
-        }
-        fprintf(stderr, "bench: wrote %s/bench.md and %s/bench.dat (sink %llx)\n", dir, dir,
-                (unsigned long long)bench_sink);
+        measure_row(&b, w, z.ne);
     }
+    if (find_row("6a") && find_row("6b"))
+        measure_sphere(&b, z.ne, (const cbx_box *)find_row("6a")->out,
+                       (const cbx_box *)find_row("6b")->out, &find_row("6a")->ex,
+                       &find_row("6b")->ex, &volratio);
+    if (b.ns > 0)
+        check_scene(&b, (const cbx_box *)find_row("S")->out, (const cbx_box *)find_row("Sc")->out,
+                    z.ne, z.ng, &sc);
+    set_notes(&b, &z, &sc, volratio);
+    for (i = 0; i < nrows; i++) {
+        w = &rows[i];
+        check_notes(w);
+        if (w->pcode == 1) fails += w->ex.fails;
+        diffs += w->diff;
+    }
+    if ((w = find_row("3t"))) tight_off = w->opt.off;
+    scene_fails = sc.looser + sc.infdiff + sc.corner_fail;
+
+    /* ---- output ---- */
+    if (fails || diffs || tight_off || scene_fails || b.bad || conv_bad)
+        snprintf(status, sizeof status, "FAILED: %ld containment failures in certbox rows, %ld "
+                 "outputs not bit-identical, %ld tight ends not the tightest, %ld scene check "
+                 "failures, %ld calls not CBX_OK", fails, diffs, tight_off, scene_fails,
+                 b.bad + conv_bad);
+    else
+        snprintf(status, sizeof status, "ok");
+    print_summary();
+    fflush(stdout);
+    if (write_tsv(dir, &z, &b, status) != 0) return 2;
     xu_clear(&b.x);
-    {
-        long fails = ex_box[2].fails + ex_box[3].fails + ex_sph.fails + ex_sphbox.fails
-                     + ex_box[5].fails + ex_box[6].fails;
-        long sfails = ex_sg.fails + ex_sc.fails + sc_corner_fail + sc_looser + sc_infdiff;
-        if (sfails) {
-            fprintf(stderr, "bench: FAILED (scene rows): %ld containment failures (S %ld, Sc %ld), "
-                            "%ld axes failing the mpq corners, %ld class-kernel ends looser than "
-                            "the general kernel's, %ld infinite ends differing\n",
-                    ex_sg.fails + ex_sc.fails, ex_sg.fails, ex_sc.fails, sc_corner_fail,
-                    sc_looser, sc_infdiff);
-            return 1;
-        }
-        if (fails || bad_timed || conv_bad || batch_diff) {
-            fprintf(stderr, "bench: FAILED: %ld containment failures in certbox rows, "
-                            "%ld calls not CBX_OK, %ld batch outputs not bit-identical\n",
-                    fails, bad_timed, batch_diff);
-            return 1;
-        }
+    mpz_clears(b.e.gap, b.e.v, b.e.w, b.e.t, (mpz_ptr)0);
+    if (strcmp(status, "ok")) {
+        fprintf(stderr, "bench: %s\n", status);
+        return 1;
     }
     return 0;
 }

@@ -20,7 +20,11 @@
  *   ref_arvo_cbox    Arvo's center/half form (Fig. 2): c' = M c + T,
  *                    h' = |M| h;
  *   ref_box_to_cbox  the usual conversion c = (lo + hi) / 2,
- *                    h = (hi - lo) / 2 (rounded to nearest; not outward).
+ *                    h = (hi - lo) / 2 (rounded to nearest; not outward);
+ *   ref_arvo_boxf    ref_arvo_box in binary32: the same operations in the
+ *                    same order on floats, every one rounded to nearest in
+ *                    binary32 (FLT_EVAL_METHOD 0: SSE on x86, no double
+ *                    intermediate), the baseline of the cbx_*f rows.
  */
 #ifndef BENCH_REF_H
 #define BENCH_REF_H
@@ -99,6 +103,30 @@ static inline void ref_box_to_cbox(const cbx_box *in, cbx_cbox *out)
     for (j = 0; j < 3; j++) {
         out->c[j] = (in->lo[j] + in->hi[j]) * 0.5;
         out->h[j] = (in->hi[j] - in->lo[j]) * 0.5;
+    }
+}
+
+static inline float ref_minf(float a, float b) { return a < b ? a : b; }
+static inline float ref_maxf(float a, float b) { return a > b ? a : b; }
+
+static inline void ref_arvo_boxf(const cbx_affinef *a, const cbx_boxf *in, cbx_boxf *out)
+{
+    float lo[3], hi[3];
+    int i, j;
+    for (i = 0; i < 3; i++) {
+        float l = a->m[i][3], h = a->m[i][3];
+        for (j = 0; j < 3; j++) {
+            float p = a->m[i][j] * in->lo[j];
+            float q = a->m[i][j] * in->hi[j];
+            l += ref_minf(p, q);
+            h += ref_maxf(p, q);
+        }
+        lo[i] = l;
+        hi[i] = h;
+    }
+    for (i = 0; i < 3; i++) {
+        out->lo[i] = lo[i];
+        out->hi[i] = hi[i];
     }
 }
 

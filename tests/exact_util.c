@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <float.h>
+#include <limits.h>
 
 /* Same order as dom_pair in specs/cbx_spec.h; 509 is in the spec's list
  * even though the comment in certbox.h only names 0, 64, ..., 960, 1018. */
@@ -1100,6 +1101,22 @@ double xu_gen_signed(xu_rng *r, int emin, int emax)
 {
     double s = xu_rng_sign(r);
     return s * xu_gen_mag(r, emin, emax);
+}
+
+const int xu_cls_values[XU_NCLS_VALUES] = {
+    CBX_CLASS_GENERAL, CBX_CLASS_PERMUTE, CBX_CLASS_SCALE, CBX_CLASS_TRANSLATE,
+    CBX_CLASS_IDENTITY, 5, 7, -1, -3, INT_MAX, INT_MIN
+};
+
+const char *xu_cls_str(int cls, char buf[16])
+{
+    static const char *const names[5] = { "GENERAL", "PERMUTE", "SCALE", "TRANSLATE",
+                                          "IDENTITY" };
+    if (cls >= 0 && cls < 5) return names[cls];
+    if (cls == INT_MAX) return "INT_MAX";
+    if (cls == INT_MIN) return "INT_MIN";
+    snprintf(buf, 16, "%d", cls);
+    return buf;
 }
 
 unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long dflt,

@@ -380,6 +380,17 @@ void xu_inject_nan(xu_rng *r, cbx_affine *a, double v0[3], double v1[3]);
  * [-1, 1)^4 (four xu_rng_unit draws per try), then its rotation matrix. */
 void xu_rand_rotation(xu_rng *r, double R[3][3]);
 
+/* Every value a caller may pass as a class (the cls of
+ * cbx_transform_box_as, or the cls field of a cbx_prepared, set by hand):
+ * the five cbx_class values GENERAL .. IDENTITY (0 .. 4) first, then ints
+ * outside the enum: 5, 7, -1, -3, INT_MAX, INT_MIN.  A value v is a class
+ * of a map of smallest class c (each class is contained in the next) iff
+ * 0 <= v <= c. */
+#define XU_NCLS_VALUES 11
+extern const int xu_cls_values[XU_NCLS_VALUES];
+/* Its name: "GENERAL" .. "IDENTITY", else the number ("7", "INT_MIN"). */
+const char *xu_cls_str(int cls, char buf[16]);
+
 /* Command-line argument n as an unsigned number (decimal, 0x.. hex), or
  * dflt when absent; anything else prints "usage: PROG usage" and exits 2. */
 unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long dflt,

@@ -1,7 +1,8 @@
 /*
  * test_classes [N] [seed]: the transform classes (cbx_classify,
- * cbx_transform_box_as) and the motion box (cbx_motion_box) against exact
- * rational arithmetic (GMP, tests/exact_util.h).
+ * cbx_transform_box_as, with its class hint misused too) and the motion box
+ * (cbx_motion_box) against exact rational arithmetic (GMP,
+ * tests/exact_util.h).
  *
  * Part 1, classification (N maps).  Maps built to be of a known class
  * (IDENTITY, TRANSLATE, SCALE, PERMUTE, GENERAL; random signs, -0.0 zeros,
@@ -60,6 +61,24 @@
  *     interpolated row: an infinite needed end means unbounded);
  *   - one full and one not, or a non-finite map row: exactly [-inf, +inf];
  *   - special outputs, in place, inputs unchanged.
+ *
+ * Part 4, misuse (a table, then N/4 cases).  cls is a hint: a class the
+ * map is not in, or an int outside the enum, must run the general kernel.
+ * Each input goes through cbx_transform_box_as with each of the 11 values
+ * of xu_cls_values (GENERAL .. IDENTITY, 5, 7, -1, -3, INT_MAX, INT_MIN):
+ *   - every exact check of exact_util (xu_check_result: status, special
+ *     outputs, containment of the exact image, proven tightness, the
+ *     half-space / out-of-domain end rules; mpq corners every
+ *     CORNER_EVERY-th case), cbx_transform_box's status, inputs unchanged;
+ *   - bit for bit cbx_transform_box's output when cls is GENERAL or not a
+ *     class of the map (outside 0 .. rule_class(a): the fallback);
+ *   - the table (diag(2,2,2) on [0,1]^3, a translation, a scale, a
+ *     permutation, a shear, huge maps beyond 2^509) has the exact image
+ *     written out: the output must contain it, with CBX_OK, for every cls.
+ *     The diag(2,2,2) case called as IDENTITY is printed: before the hint
+ *     was checked it returned [0,1]^3 with CBX_OK (exact image [0,2]^3).
+ *   The random inputs are part 2's draws (maps of each class, boxes with
+ *   infinite ends, NaN, empty, huge magnitudes, random exponents).
  *
  * A summary line per part; the last line is "N passed, M failed" (cases of
  * all parts); exit status 1 on any failure.
@@ -664,18 +683,26 @@ static void kernel_case(xu_exact *x, kstats *ks, const cbx_affine *a, const cbx_
     if (bad) ks[cls].failed++;
 }
 
+/* A case of the class kernels: a map of class cls (realistic, extreme or
+ * random exponents over the fast range; a NaN entry in 1 of 50) and a box
+ * (fast-range boxes for most random-exponent maps); returns the box kind. */
+static int gen_kernel_case(xu_rng *r, cbx_affine *a, cbx_box *in, int cls)
+{
+    int p = xu_rng_int(r, 0, 9), g = p < 4 ? 0 : p < 8 ? 1 : 2;
+    int bk = g == 2 && xu_rng_int(r, 0, 3) ? BX_FASTR : pick_box_kind(r);
+    gen_map_cls(r, a, cls, g);
+    if (xu_rng_int(r, 0, 49) == 0) a->m[xu_rng_int(r, 0, 2)][xu_rng_int(r, 0, 3)] = NAN;
+    gen_box(r, in, bk);
+    return bk;
+}
+
 static void run_kernels(xu_rng *r, xu_exact *x, kstats *ks, long n, long *bxk)
 {
     long c;
     cbx_affine a;
     cbx_box in;
     for (c = 0; c < n; c++) {
-        int cls = (int)(c % NCLS), p = xu_rng_int(r, 0, 9), g = p < 4 ? 0 : p < 8 ? 1 : 2;
-        int bk = g == 2 && xu_rng_int(r, 0, 3) ? BX_FASTR : pick_box_kind(r);
-        gen_map_cls(r, &a, cls, g);
-        if (xu_rng_int(r, 0, 49) == 0) a.m[xu_rng_int(r, 0, 2)][xu_rng_int(r, 0, 3)] = NAN;
-        gen_box(r, &in, bk);
-        bxk[bk]++;
+        bxk[gen_kernel_case(r, &a, &in, (int)(c % NCLS))]++;
         kernel_case(x, ks, &a, &in, c % CORNER_EVERY == 0, c);
     }
 }
@@ -1099,6 +1126,184 @@ static void run_motion(xu_rng *r, xu_exact *x, mstats *st, long n)
 }
 
 /* ---------------------------------------------------------------------- */
+/* Part 4: misuse, cbx_transform_box_as with any cls                      */
+/* ---------------------------------------------------------------------- */
+
+/* The cls of cbx_transform_box_as is a hint (certbox.h): a class the map is
+ * not in (larger than its class) or a value outside the enum runs the
+ * general kernel.  Whether v is a class of the map is decided here by
+ * rule_class (part 1 checks it against cbx_classify). */
+static int general_expected(int v, const cbx_affine *a)
+{
+    return v == CBX_CLASS_GENERAL || !(v >= 0 && v <= rule_class(a));
+}
+
+typedef struct ustats {
+    long cases, failed, calls;
+    long map_cls[NCLS];                   /* random maps by rule_class       */
+    long v_calls[XU_NCLS_VALUES];         /* calls per cls value             */
+    long v_general[XU_NCLS_VALUES];       /* of which GENERAL or not a class */
+    long v_exact_fail[XU_NCLS_VALUES], v_bits_fail[XU_NCLS_VALUES];
+    long v_status_fail[XU_NCLS_VALUES], v_input_fail[XU_NCLS_VALUES];
+    long table_calls, table_img_fail;     /* the table: image written out    */
+} ustats;
+
+static void log_misuse(long id, const char *what, int v, const char *why, const cbx_affine *a,
+                       const cbx_box *in, const cbx_box *o, const cbx_box *g)
+{
+    char nb[16];
+    if (fail_logs++ >= MAX_FAIL_LOGS) return;
+    printf("FAIL misuse %s %ld (map of class %s, called as %s): %s\n", what, id,
+           cls_name[rule_class(a)], xu_cls_str(v, nb), why);
+    xu_print_case(stdout, a, in);
+    xu_print_box(stdout, "as", o);
+    xu_print_box(stdout, "cbx_transform_box", g);
+}
+
+/* One call cbx_transform_box_as(a, xu_cls_values[vi], in, o), judged by
+ * every exact check of exact_util (mpq corners when corners != 0), against
+ * cbx_transform_box's status sg, and bit for bit against its output g when
+ * the general kernel is expected; inputs unchanged.  Returns 1 on failure. */
+static int misuse_call(xu_exact *x, ustats *st, int vi, const cbx_affine *a, const cbx_box *in,
+                       const cbx_box *g, cbx_status sg, int corners, const char *what, long id,
+                       cbx_box *o)
+{
+    int v = xu_cls_values[vi], bad = 0;
+    cbx_affine a0 = *a;
+    cbx_box in0 = *in;
+    cbx_status s;
+    xu_verdict vd;
+    char why[200];
+    fill_nan(o);
+    s = cbx_transform_box_as(a, (cbx_class)v, in, o);
+    st->calls++;
+    st->v_calls[vi]++;
+    if (memcmp(&a0, a, sizeof a0) || memcmp(&in0, in, sizeof in0)) {
+        st->v_input_fail[vi]++;
+        log_misuse(id, what, v, "the call modified its inputs", &a0, &in0, o, g);
+        return 1;
+    }
+    if (xu_check_result(x, a, in, o, s, corners, &vd)) {
+        st->v_exact_fail[vi]++;
+        log_misuse(id, what, v, vd.why, a, in, o, g);
+        bad = 1;
+    }
+    if (s != sg) {
+        st->v_status_fail[vi]++;
+        snprintf(why, sizeof why, "status %s, cbx_transform_box %s", cbx_status_name(s),
+                 cbx_status_name(sg));
+        if (!bad) log_misuse(id, what, v, why, a, in, o, g);
+        bad = 1;
+    }
+    if (general_expected(v, a)) {
+        st->v_general[vi]++;
+        if (memcmp(o, g, sizeof *o)) {
+            st->v_bits_fail[vi]++;
+            if (!bad) log_misuse(id, what, v, "not bit for bit cbx_transform_box's output (the "
+                                 "general kernel is expected)", a, in, o, g);
+            bad = 1;
+        }
+    }
+    return bad;
+}
+
+/* Every cls value on one input; o[vi] gets each call's output, *sg
+ * cbx_transform_box's status (every call must return it). */
+static int misuse_case(xu_exact *x, ustats *st, const cbx_affine *a, const cbx_box *in,
+                       int corners, const char *what, long id, cbx_box o[XU_NCLS_VALUES],
+                       cbx_status *sg)
+{
+    cbx_box g;
+    int vi, bad = 0;
+    fill_nan(&g);
+    *sg = cbx_transform_box(a, in, &g);
+    for (vi = 0; vi < XU_NCLS_VALUES; vi++)
+        bad |= misuse_call(x, st, vi, a, in, &g, *sg, corners, what, id, &o[vi]);
+    return bad;
+}
+
+/* Maps and boxes whose exact image is known and written out (all values
+ * small integers, or powers of 2: the comparisons below are exact), each
+ * with every cls value: the output must contain img with CBX_OK.  Before
+ * the hint was checked, IDENTITY on diag(2,2,2) returned [0,1]^3 with
+ * CBX_OK (the identity kernel copies the box). */
+typedef struct misuse_row { const char *name; cbx_affine a; cbx_box in, img; } misuse_row;
+#define MROW(a, b, c, t) { a, b, c, t }
+#define MMAT(r0, r1, r2) { { r0, r1, r2 } }
+#define MBOX(l0, l1, l2, h0, h1, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
+static const misuse_row misuse_table[] = {
+    { "diag(2,2,2) on [0,1]^3",
+      MMAT(MROW(2, 0, 0, 0), MROW(0, 2, 0, 0), MROW(0, 0, 2, 0)),
+      MBOX(0, 0, 0, 1, 1, 1), MBOX(0, 0, 0, 2, 2, 2) },
+    { "translation (1,2,3) on [0,1]^3",
+      MMAT(MROW(1, 0, 0, 1), MROW(0, 1, 0, 2), MROW(0, 0, 1, 3)),
+      MBOX(0, 0, 0, 1, 1, 1), MBOX(1, 2, 3, 2, 3, 4) },
+    { "diag(-1,3,1/2) + (0,0,1)",
+      MMAT(MROW(-1, 0, 0, 0), MROW(0, 3, 0, 0), MROW(0, 0, 0.5, 1)),
+      MBOX(0, -1, 2, 1, 2, 4), MBOX(-1, -3, 2, 0, 6, 3) },
+    { "permutation (y, -z, 2x)",
+      MMAT(MROW(0, 1, 0, 0), MROW(0, 0, -1, 0), MROW(2, 0, 0, 0)),
+      MBOX(0, 2, 4, 1, 3, 5), MBOX(2, -5, 0, 3, -4, 2) },
+    { "shear x + y",
+      MMAT(MROW(1, 1, 0, 0), MROW(0, 1, 0, 0), MROW(0, 0, 1, 0)),
+      MBOX(0, 2, 4, 1, 3, 5), MBOX(2, 2, 4, 4, 3, 5) },
+    { "huge diag(2^600, 2^600, 1) + (0, 0, 2^1000)",
+      MMAT(MROW(0x1p600, 0, 0, 0), MROW(0, 0x1p600, 0, 0), MROW(0, 0, 1, 0x1p1000)),
+      MBOX(0, 0, 0, 1, 1, 1), MBOX(0, 0, 0x1p1000, 0x1p600, 0x1p600, 0x1p1000) },
+    { "huge permutation (2^1000 z, y, x)",
+      MMAT(MROW(0, 0, 0x1p1000, 0), MROW(0, 1, 0, 0), MROW(1, 0, 0, 0)),
+      MBOX(0, 0, 0, 1, 1, 1), MBOX(0, 0, 0, 0x1p1000, 1, 1) },
+};
+#define N_MISUSE_TABLE ((int)(sizeof misuse_table / sizeof misuse_table[0]))
+
+static int contains(const cbx_box *o, const cbx_box *img)
+{
+    int j;
+    for (j = 0; j < 3; j++)
+        if (!(o->lo[j] <= img->lo[j] && o->hi[j] >= img->hi[j])) return 0;
+    return 1;
+}
+
+static void run_misuse(xu_rng *r, xu_exact *x, ustats *st, long n, long *bxk)
+{
+    cbx_box o[XU_NCLS_VALUES], in;
+    cbx_affine a;
+    cbx_status sg;
+    long c;
+    int k, vi;
+    char nb[16];
+    for (k = 0; k < N_MISUSE_TABLE; k++) {
+        const misuse_row *t = &misuse_table[k];
+        int bad = misuse_case(x, st, &t->a, &t->in, 1, "table", k, o, &sg);
+        for (vi = 0; vi < XU_NCLS_VALUES; vi++) { /* every call returned sg */
+            st->table_calls++;
+            if (sg != CBX_OK || !contains(&o[vi], &t->img)) {
+                st->table_img_fail++;
+                if (!bad) log_misuse(k, "table", xu_cls_values[vi], "the exact image (written "
+                                     "out) is not contained, or the status is not CBX_OK",
+                                     &t->a, &t->in, &o[vi], &t->img);
+                bad = 1;
+            }
+        }
+        if (k == 0) /* the case of the old bug, shown */
+            printf("  %s as %s: [%a, %a] x [%a, %a] x [%a, %a] (%s [0,2]^3)\n", t->name,
+                   xu_cls_str(CBX_CLASS_IDENTITY, nb), o[CBX_CLASS_IDENTITY].lo[0],
+                   o[CBX_CLASS_IDENTITY].hi[0], o[CBX_CLASS_IDENTITY].lo[1],
+                   o[CBX_CLASS_IDENTITY].hi[1], o[CBX_CLASS_IDENTITY].lo[2],
+                   o[CBX_CLASS_IDENTITY].hi[2],
+                   contains(&o[CBX_CLASS_IDENTITY], &t->img) ? "contains" : "DOES NOT contain");
+        st->cases++;
+        if (bad) st->failed++;
+    }
+    for (c = 0; c < n; c++) {
+        bxk[gen_kernel_case(r, &a, &in, (int)(c % NCLS))]++;
+        st->map_cls[rule_class(&a)]++;
+        st->cases++;
+        if (misuse_case(x, st, &a, &in, c % CORNER_EVERY == 0, "case", c, o, &sg)) st->failed++;
+    }
+}
+
+/* ---------------------------------------------------------------------- */
 /* Driver                                                                 */
 /* ---------------------------------------------------------------------- */
 
@@ -1109,13 +1314,14 @@ int main(int argc, char **argv)
     static cstats cs;
     static kstats ks[NCLS];
     static mstats ms;
-    static long bxk[NBX];
+    static ustats us;
+    static long bxk[NBX], bxu[NBX];
     xu_rng rng;
     xu_exact x;
     cbx_affine a;
     long cases, failed, kfailed = 0, kcases = 0;
     int k, f;
-    clock_t t0 = clock(), t1, t2;
+    clock_t t0 = clock(), t1, t2, t3;
 
     xu_init(&x);
     printf("-- test_classes: cbx_classify, cbx_transform_box_as, cbx_motion_box against GMP, "
@@ -1191,12 +1397,36 @@ int main(int argc, char **argv)
            ms.max_ex);
     printf("part 3 motion: %ld cases, %ld failed\n", ms.cases, ms.failed);
 
-    printf("  CPU time: part 1 %.2f s, part 2 %.2f s, part 3 %.2f s\n",
+    /* part 4 */
+    t3 = clock();
+    rng.s = UINT64_C(0x452821e638d01377) ^ seed;
+    printf("part 4 misuse (cbx_transform_box_as with each of the %d cls values below: the "
+           "five classes, so also classes the map is not in, and ints outside the enum; a "
+           "table of %d maps with the exact image written out, then N/4 = %ld random cases as "
+           "in part 2):\n", XU_NCLS_VALUES, N_MISUSE_TABLE, n / 4);
+    run_misuse(&rng, &x, &us, n / 4, bxu);
+    printf("  maps (by rule_class):");
+    for (k = NCLS - 1; k >= 0; k--) printf(" %s %ld", cls_name[k], us.map_cls[k]);
+    printf("\n  boxes:");
+    for (k = 0; k < NBX; k++) printf("%s %s %ld", k ? "," : "", bx_name[k], bxu[k]);
+    printf("\n  table: %ld calls, exact image not contained (or status not OK) %ld\n",
+           us.table_calls, us.table_img_fail);
+    for (k = 0; k < XU_NCLS_VALUES; k++) {
+        char nb[16];
+        printf("  cls %-9s %7ld calls, %7ld of them GENERAL or not a class of the map (general "
+               "kernel expected): not bit for bit cbx_transform_box %ld; exact checks failed "
+               "%ld, status differs %ld, inputs changed %ld\n",
+               xu_cls_str(xu_cls_values[k], nb), us.v_calls[k], us.v_general[k],
+               us.v_bits_fail[k], us.v_exact_fail[k], us.v_status_fail[k], us.v_input_fail[k]);
+    }
+    printf("part 4 misuse: %ld cases (%ld calls), %ld failed\n", us.cases, us.calls, us.failed);
+
+    printf("  CPU time: part 1 %.2f s, part 2 %.2f s, part 3 %.2f s, part 4 %.2f s\n",
            (double)(t1 - t0) / CLOCKS_PER_SEC, (double)(t2 - t1) / CLOCKS_PER_SEC,
-           (double)(clock() - t2) / CLOCKS_PER_SEC);
+           (double)(t3 - t2) / CLOCKS_PER_SEC, (double)(clock() - t3) / CLOCKS_PER_SEC);
     xu_clear(&x);
-    cases = cs.cases + kcases + ms.cases;
-    failed = cs.failed + kfailed + ms.failed;
+    cases = cs.cases + kcases + ms.cases + us.cases;
+    failed = cs.failed + kfailed + ms.failed + us.failed;
     printf("%ld passed, %ld failed\n", cases - failed, failed);
     return failed ? 1 : 0;
 }

@@ -18,6 +18,20 @@
  *  2. cbx_transform_boxesf: N/100 batches (sizes 0, 1, 2, 7, 100) under one
  *     map, every out[k] bit for bit against the single call, the most
  *     severe status, nothing written past out[n-1].
+ *  2b. Prepared maps: N/100 + 20 batches (sizes 0, 1, 2, 7, 100; maps of
+ *     xu_gen_case, a quarter with entries at the fast range's edge 2^61,
+ *     2^122 or the next float), and every row of the special-value table
+ *     (6) as a batch of one box.  cbx_preparef into a struct of garbage:
+ *     the map copied bit for bit, the fast flag set iff every linear entry
+ *     is at most 2^61 and every translation at most 2^122 in magnitude.
+ *     The structs: cbx_preparef's; zero-initialised (= { 0 }) with the map
+ *     set by hand; cls forged (a value of xu_cls_values, fast kept or
+ *     cleared); fast and cls forged (fast = 1 whatever the map).
+ *     cbx_transform_box_prepf (not on the fast-forged struct: it trusts the
+ *     flag) bit for bit and status against cbx_transform_boxf, and in
+ *     place; cbx_transform_boxes_prepf bit for bit and status against
+ *     cbx_transform_boxesf, nothing written past out[n-1], *p unchanged;
+ *     the boxes of the forged structs against the exact oracle.
  *  3. cbx_transform_cboxf: N/2 random cases (zero columns against infinite
  *     or huge centers and half-widths included): status and each axis's
  *     kind (full, dropped, lost), exact containment of [c-h, c+h] of the
@@ -71,7 +85,7 @@ static void fs_excess(fstat *s, double e)
 
 static void fs_print(const fstat *s)
 {
-    printf("  %-22s %8ld cases, %9ld exact checks, %ld failed", s->name, s->cases, s->checks,
+    printf("  %-25s %8ld cases, %9ld exact checks, %ld failed", s->name, s->cases, s->checks,
            s->failed);
     if (s->axes)
         printf("; excess over %ld ends: max %.2f mean %.2f", s->axes, s->max_ex,
@@ -314,6 +328,173 @@ static void run_batch(xu_rng *r, int n)
         st_batch.failed++;
         fs_fail(&st_batch, "batch", "differs from the single calls or wrote past out[n-1]");
     }
+}
+
+/* ---- 2b. prepared maps ------------------------------------------------ */
+
+static fstat st_prep = { "cbx_preparef", 0, 0, 0, 0, 0, 0 };
+static fstat st_prep1 = { "cbx_transform_box_prepf", 0, 0, 0, 0, 0, 0 };
+static fstat st_prepn = { "cbx_transform_boxes_prepf", 0, 0, 0, 0, 0, 0 };
+static long prep_fast, prep_exact;
+
+/* the structs handed over: cbx_preparef's, zero-initialised, cls forged,
+ * fast and cls forged */
+enum { PV_PREP, PV_ZERO, PV_CLS, PV_FORGED, NPV };
+static const char *const pv_name[NPV] = { "cbx_preparef", "zero-init", "cls forged",
+                                          "fast+cls forged" };
+
+/* The binary32 fast range: |m| <= 2^61, |t| <= 2^122 (false on NaN). */
+static int map_fast_f(const cbx_affinef *a)
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 4; j++)
+            if (!(fabs((double)a->m[i][j]) <= (j < 3 ? 0x1p61 : 0x1p122))) return 0;
+    return 1;
+}
+
+/* One struct *p (kind v) on the boxes in[0 .. n-1]: a failed box_prepf
+ * call counts in st_prep1, a failed boxes_prepf call (bits, status,
+ * guards, *p, or a box against the exact oracle) in st_prepn. */
+static void prep_variant(xu_exact *x, const cbx_preparedf *p, int v, const cbx_boxf *in, int n,
+                        const char *what)
+{
+    cbx_preparedf p0 = *p;
+    cbx_boxf out[102], ref[102];
+    cbx_status s, sr, sk[100];
+    char why[400], nb[16];
+    const char *cls = xu_cls_str(p->cls, nb);
+    int k, j, nbad = 0; /* the boxes_prepf call failed */
+
+    for (k = 0; k < n; k++) { /* the single calls: the reference statuses */
+        cbx_boxf o;
+        sk[k] = cbx_transform_boxf(&p->a, &in[k], &o);
+    }
+    if (v != PV_FORGED)
+        for (k = 0; k < n; k++) {
+            cbx_boxf o, r, ip;
+            memset(&o, 0x3c, sizeof o);
+            nan_bf(&r);
+            s = cbx_transform_box_prepf(p, &in[k], &o);
+            sr = cbx_transform_boxf(&p->a, &in[k], &r);
+            ip = in[k];
+            st_prep1.cases++;
+            st_prep1.checks += 2;
+            if (s != sr || memcmp(&o, &r, sizeof o)) {
+                snprintf(why, sizeof why, "box %d, %s (fast %d, cls %s): status %s, "
+                         "cbx_transform_boxf %s, boxes %s", k, pv_name[v], p->fast, cls,
+                         cbx_status_name(s), cbx_status_name(sr),
+                         memcmp(&o, &r, sizeof o) ? "differ" : "equal");
+                fs_fail(&st_prep1, what, why);
+                st_prep1.failed++;
+            } else if (cbx_transform_box_prepf(p, &ip, &ip) != s || memcmp(&ip, &o, sizeof o)) {
+                snprintf(why, sizeof why, "box %d, %s: the in-place call differs", k, pv_name[v]);
+                fs_fail(&st_prep1, what, why);
+                st_prep1.failed++;
+            }
+        }
+
+    for (k = 0; k < n + 2; k++) memset(&out[k], 0x5a, sizeof out[k]); /* guards */
+    for (k = 0; k < n; k++) nan_bf(&ref[k]);
+    s = cbx_transform_boxes_prepf(p, in, out, (size_t)n);
+    sr = cbx_transform_boxesf(&p->a, in, ref, (size_t)n);
+    st_prepn.cases++;
+    st_prepn.checks += 4;
+    {
+        unsigned char g[2 * sizeof out[0]];
+        memset(g, 0x5a, sizeof g);
+        if (s != sr || (n && memcmp(out, ref, (size_t)n * sizeof out[0]))
+            || memcmp(g, &out[n], sizeof g) || memcmp(&p0, p, sizeof p0)) {
+            snprintf(why, sizeof why, "n = %d, %s (fast %d, cls %s): status %s, "
+                     "cbx_transform_boxesf %s; boxes %s, guards %s, *p %s", n, pv_name[v],
+                     p0.fast, cls, cbx_status_name(s), cbx_status_name(sr),
+                     n && memcmp(out, ref, (size_t)n * sizeof out[0]) ? "differ" : "equal",
+                     memcmp(g, &out[n], sizeof g) ? "WRITTEN" : "intact",
+                     memcmp(&p0, p, sizeof p0) ? "CHANGED" : "unchanged");
+            fs_fail(&st_prepn, what, why);
+            nbad = 1;
+        }
+    }
+    if (v == PV_CLS || v == PV_FORGED)
+        for (k = 0; k < n; k++) {
+            cbx_affine ad;
+            cbx_box bd, od;
+            xu_verdict vd;
+            from_af(&p0.a, &ad);
+            from_bf(&in[k], &bd);
+            from_bf(&out[k], &od);
+            prep_exact++;
+            xu_check_result(x, &ad, &bd, &od, sk[k], 0, &vd);
+            for (j = 0; j < XU_NFLAGS; j++) st_prepn.checks += vd.applied[j];
+            if (vd.failed) {
+                snprintf(why, sizeof why, "box %d of n = %d, %s (fast %d, cls %s): %s", k, n,
+                         pv_name[v], p0.fast, cls, vd.why);
+                fs_fail(&st_prepn, what, why);
+                nbad = 1;
+            }
+        }
+    if (nbad) st_prepn.failed++;
+}
+
+/* The map ad and the n boxes bd[] (n <= 100) in binary32: cbx_preparef,
+ * then every struct of prep_variant, with nforge values of xu_cls_values
+ * from index f0 on; the fast flag of the cls-forged struct is cleared for
+ * odd id.  Failures are counted in st_prep, st_prep1 and st_prepn. */
+static void run_prep(xu_exact *x, const cbx_affine *ad, const cbx_box *bd, int n, long id, int f0,
+                    int nforge, const char *what)
+{
+    cbx_affinef a, a0;
+    cbx_boxf in[100];
+    cbx_preparedf p, q, z = { 0 };
+    char why[160];
+    int k, f;
+    to_af(ad, &a);
+    for (k = 0; k < n; k++) to_bf(&bd[k], &in[k]);
+    a0 = a;
+    memset(&p, 0xa5, sizeof p);
+    cbx_preparef(&a, &p);
+    st_prep.cases++;
+    st_prep.checks += 3;
+    if (p.fast) prep_fast++;
+    if (memcmp(&p.a, &a, sizeof a) || memcmp(&a0, &a, sizeof a)
+        || (p.fast != 0) != map_fast_f(&a)) {
+        snprintf(why, sizeof why, "map copied %s, fast %d (fast range: %d)",
+                 memcmp(&p.a, &a, sizeof a) ? "NOT bit for bit" : "bit for bit", p.fast,
+                 map_fast_f(&a));
+        fs_fail(&st_prep, what, why);
+        st_prep.failed++;
+    }
+    z.a = a;
+    prep_variant(x, &p, PV_PREP, in, n, what);
+    prep_variant(x, &z, PV_ZERO, in, n, what);
+    for (f = 0; f < nforge; f++) {
+        q = p;
+        q.cls = xu_cls_values[(f0 + f) % XU_NCLS_VALUES];
+        if (id % 2) q.fast = 0;
+        prep_variant(x, &q, PV_CLS, in, n, what);
+        q.fast = 1;
+        prep_variant(x, &q, PV_FORGED, in, n, what);
+    }
+}
+
+/* A map of xu_gen_case, a quarter of them with an entry at the edge of the
+ * fast range (2^61, 2^122) or the next float beyond, then n boxes. */
+static void prep_case(xu_exact *x, xu_rng *r, int n, long id)
+{
+    static const double edge[4] = { 0x1p61, 0x1.000002p61, 0x1p122, 0x1.000002p122 };
+    cbx_affine a, ignore;
+    cbx_box b[100];
+    char what[48];
+    int k;
+    xu_gen_case(r, &a, &b[0]);
+    if (xu_rng_int(r, 0, 3) == 0) {
+        int i = xu_rng_int(r, 0, 2), j = xu_rng_int(r, 0, 3), e = xu_rng_int(r, 0, 1);
+        double sg = xu_rng_sign(r);
+        a.m[i][j] = sg * edge[(j == 3) * 2 + e];
+    }
+    for (k = 0; k < n; k++) xu_gen_case(r, &ignore, &b[k]);
+    snprintf(what, sizeof what, "random prepared batch %ld", id);
+    run_prep(x, &a, b, n, id, (int)(id % XU_NCLS_VALUES), 1, what);
 }
 
 /* ---- 3. cbx_transform_cboxf ------------------------------------------- */
@@ -773,6 +954,7 @@ static void run_specials(xu_exact *x, xu_stats *all)
             else b.hi[p - 15] = s;
             snprintf(what, sizeof what, "special box pos %d value %a", p, s);
             run_box(x, all, &a, &b, 1, what);
+            run_prep(x, &a, &b, 1, v * 18 + p, 0, XU_NCLS_VALUES, what);
             for (j = 0; j < 3; j++) { c.c[j] = base_b.lo[j]; c.h[j] = 1.5f; }
             if (p >= 12 && p < 15) c.c[p - 12] = s;
             else if (p >= 15) c.h[p - 15] = s;
@@ -835,6 +1017,11 @@ int main(int argc, char **argv)
         run_box(&x, &all, &a, &b, c % 50 == 0, what);
     }
     for (c = 0; c < n / 100 + 5; c++) run_batch(&r, sizes[c % 5]);
+    {   /* its own generator: the draws of the sections below stay as they were */
+        xu_rng rp;
+        rp.s = UINT64_C(0x9e3779b97f4a7c15) ^ seed;
+        for (c = 0; c < n / 100 + 20; c++) prep_case(&x, &rp, sizes[c % 5], c);
+    }
     for (c = 0; c < n / 2; c++) {
         cbx_affine a;
         cbx_cbox cb;
@@ -883,6 +1070,13 @@ int main(int argc, char **argv)
     fs_print(&st_box);
     fs_print(&st_inpl);
     fs_print(&st_batch);
+    fs_print(&st_prep);
+    fs_print(&st_prep1);
+    fs_print(&st_prepn);
+    printf("  prepared maps: %ld prepared (%ld in the fast range); structs: cbx_preparef's, "
+           "zero-initialised, cls forged, fast+cls forged (cls over the %d values of "
+           "xu_cls_values); boxes of the forged structs against the exact oracle: %ld\n",
+           st_prep.cases, prep_fast, XU_NCLS_VALUES, prep_exact);
     fs_print(&st_cbox);
     fs_print(&st_b2c);
     fs_print(&st_c2b);
@@ -891,10 +1085,12 @@ int main(int argc, char **argv)
     printf("  special-value rows: %ld (%d values x every input position x every function)\n",
            special_rows, N_SPECIAL);
     printf("  generated values that were not floats: %ld\n", not_float);
-    failed = st_box.failed + st_inpl.failed + st_batch.failed + st_cbox.failed + st_b2c.failed
-             + st_c2b.failed + st_sph.failed + st_ell.failed + (not_float != 0);
-    c = st_box.cases + st_inpl.cases + st_batch.cases + st_cbox.cases + st_b2c.cases
-        + st_c2b.cases + st_sph.cases + st_ell.cases;
+    failed = st_box.failed + st_inpl.failed + st_batch.failed + st_prep.failed + st_prep1.failed
+             + st_prepn.failed + st_cbox.failed + st_b2c.failed + st_c2b.failed + st_sph.failed
+             + st_ell.failed + (not_float != 0);
+    c = st_box.cases + st_inpl.cases + st_batch.cases + st_prep.cases + st_prep1.cases
+        + st_prepn.cases + st_cbox.cases + st_b2c.cases + st_c2b.cases + st_sph.cases
+        + st_ell.cases;
     xu_clear(&x);
     printf("%ld passed, %ld failed\n", c - failed, failed);
     return failed != 0;
