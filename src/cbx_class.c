@@ -451,19 +451,57 @@ cbx_class cbx_classify(const cbx_affine *a)
     return CBX_CLASS_GENERAL;
 }
 
+/* 1 when x == v (v = 0 or 1; x is then finite), else 0: no branch. */
+/*@ requires \is_finite(v);
+    assigns \nothing;
+    ensures \result == 0 || \result == 1;
+    ensures \result == 1 ==> \is_finite(x) && x == v;
+*/
+static inline int is_val(double x, double v) { return x == v; }
+
+/* The identity and translation classes, checked with equalities only (the
+ * entries compared with 0 and 1 are then finite; a translation's t is
+ * checked finite too): cheaper than cbx_classify, whose finiteness tests
+ * come first. */
+/*@ requires valid: \valid_read(a);
+    assigns \nothing;
+    ensures \result != 0 ==> is_translate(a);
+*/
+static int translate_holds(const cbx_affine *a)
+{
+    int n = is_val(a->m[0][0], 1.0) + is_val(a->m[0][1], 0.0) + is_val(a->m[0][2], 0.0)
+          + is_val(a->m[1][0], 0.0) + is_val(a->m[1][1], 1.0) + is_val(a->m[1][2], 0.0)
+          + is_val(a->m[2][0], 0.0) + is_val(a->m[2][1], 0.0) + is_val(a->m[2][2], 1.0);
+    return (n == 9) && cbx_is_fin(a->m[0][3]) && cbx_is_fin(a->m[1][3]) && cbx_is_fin(a->m[2][3]);
+}
+
 /* The class a caller passed, checked against the map: cls if the map is in
- * it (cls no larger than cbx_classify(a): each class is contained in the
- * next), the general class otherwise, so a class passed apart from its map
- * (an easy mix-up) costs speed, never soundness. */
+ * it, the general class otherwise, so a class passed apart from its map (an
+ * easy mix-up) costs speed, never soundness.  IDENTITY and TRANSLATE (the
+ * cheap kernels) are checked by equalities; SCALE and PERMUTE through
+ * cbx_classify (each class is contained in the next). */
 /*@ requires valid: \valid_read(a);
     assigns \nothing;
     ensures ok: class_ok(a, \result);
 */
 static cbx_class class_checked(const cbx_affine *a, cbx_class cls)
 {
-    cbx_class c = cbx_classify(a);
-    if (cls >= CBX_CLASS_GENERAL && cls <= c)
-        return cls;
+    if (cls == CBX_CLASS_GENERAL)
+        return CBX_CLASS_GENERAL;
+    if (cls == CBX_CLASS_IDENTITY || cls == CBX_CLASS_TRANSLATE) {
+        if (!translate_holds(a))
+            return CBX_CLASS_GENERAL;
+        if (cls == CBX_CLASS_TRANSLATE)
+            return CBX_CLASS_TRANSLATE;
+        if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0)
+            return CBX_CLASS_IDENTITY;
+        return CBX_CLASS_GENERAL;
+    }
+    {
+        cbx_class c = cbx_classify(a);
+        if (cls >= CBX_CLASS_GENERAL && cls <= c)
+            return cls;
+    }
     return CBX_CLASS_GENERAL;
 }
 
