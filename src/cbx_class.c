@@ -2,23 +2,23 @@
  * Transform classes: compute only what the map calls for.
  *
  * cbx_classify sorts a map into IDENTITY, TRANSLATE, SCALE, PERMUTE (each
- * row has at most one nonzero linear entry) or GENERAL.  Each class has a
- * kernel with cbx_transform_box's contract:
+ * row has at most one nonzero linear entry) or GENERAL.
+ * cbx_transform_box_as runs, with cbx_transform_box's contract:
  *   IDENTITY   the box itself (exact);
  *   TRANSLATE  per end, t + l rounded outward (cbx_add_dn / cbx_add_up);
- *   SCALE, PERMUTE  per end, the one product m*v at the end's vertex v
- *              (v = l or h by the sign of m) rounded to nearest, then
- *              t + m*v rounded outward with a margin that pays for the
- *              product's rounding.
- * A kernel runs on its fast range only: every box end finite and ordered,
- * |box ends| and |linear entries| <= 2^509 (2^1018 for IDENTITY and
- * TRANSLATE), |t| <= 2^1018, where every row is full (row_full) and the
+ *   SCALE, PERMUTE, GENERAL  cbx_transform_box (on the fast range its
+ *              branch-free kernel, faster than a one-product kernel that
+ *              branches on the sign of the entry).
+ * The class passed is checked against the map (class_checked): a class
+ * the map is not in runs cbx_transform_box.  A class kernel runs on its
+ * fast range only: every box end finite, ordered and at most 2^1018 in
+ * magnitude, |t| <= 2^1018, where every row is full (row_full) and the
  * general kernel would return CBX_OK.  Anything else (NaN, empty, infinite
  * ends, large magnitudes) goes to cbx_transform_box, so the statuses and
  * special outputs are the general kernel's by construction.
- * Never looser than cbx_transform_box: on a sparse row the general kernel
- * computes the same rounded sum t + m*v and widens it by 5.5 u R with a
- * scale R at least as large (GMP-checked in tests/test_classes.c).
+ * Never looser than cbx_transform_box: the identity is exact, and a
+ * translation's t + l is rounded outward by a margin no larger than the
+ * general kernel's widening (GMP-checked in tests/test_classes.c).
  */
 #include "certbox.h"
 #include "cbx_round.h"
@@ -44,57 +44,6 @@ static inline int in_rng(double x, double b)
 static inline int end_pair(double l, double h, double b)
 {
     return in_rng(l, b) && in_rng(h, b) && l <= h;
-}
-
-/* The sign step of one column: m*v at the vertex is the least (greatest)
- * of m*l and m*h. */
-/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h);
-    requires ord: l <= h;
-    assigns \nothing;
-    ensures pos: m >= 0 ==> tmin(m, l, h) == m*l && tmax(m, l, h) == m*h;
-    ensures neg: m < 0 ==> tmin(m, l, h) == m*h && tmax(m, l, h) == m*l;
-*/
-static inline void sign_step(double m, double l, double h)
-{
-    /*@ assert d: 0 <= h - l; */
-    /*@ assert pn: m >= 0 ==> nn_prod(m, h - l); */
-    /*@ assert nn: m < 0 ==> nn_prod(-m, h - l); */
-    (void)m; (void)l; (void)h;
-}
-
-/* One column and the translation: t + m*x over x in [l, h], outward. */
-/*@ requires fin: \is_finite(m) && \is_finite(t) && \is_finite(l) && \is_finite(h);
-    requires rm: -0x1p509 <= m <= 0x1p509;
-    requires rb: -0x1p509 <= l <= 0x1p509 && -0x1p509 <= h <= 0x1p509;
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
-    requires ord: l <= h;
-    assigns \nothing;
-    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
-    ensures ok: span_ok(\result.lo, \result.hi, m, t, l, h);
-*/
-static span span_mul(double m, double t, double l, double h)
-{
-    span r;
-    double vl = l, vh = h;
-    if (m < 0.0) {
-        vl = h;
-        vh = l;
-    }
-    sign_step(m, l, h);
-    /*@ assert vl: tmin(m, l, h) == m*vl && tmax(m, l, h) == m*vh; */
-    /*@ assert mg: \abs(m*vl) <= tmag(m, l, h) && \abs(m*vh) <= tmag(m, l, h); */
-    /*@ assert dm: in_dom(m, vl) && in_dom(m, vh); */
-    double pl = cbx_mul_rn(m, vl);
-    double ph = cbx_mul_rn(m, vh);
-    /*@ assert ple: \abs(pl - m*vl) <= 0x1p-53 * \abs(m*vl) + 0x1p-1074; */
-    /*@ assert pla: \abs(pl) <= \abs(m*vl) * (1 + 0x1p-53) + 0x1p-1074; */
-    /*@ assert plb: \abs(m*vl) * (1 - 0x1p-53) <= \abs(pl) + 0x1p-1074; */
-    /*@ assert phe: \abs(ph - m*vh) <= 0x1p-53 * \abs(m*vh) + 0x1p-1074; */
-    /*@ assert pha: \abs(ph) <= \abs(m*vh) * (1 + 0x1p-53) + 0x1p-1074; */
-    /*@ assert phb: \abs(m*vh) * (1 - 0x1p-53) <= \abs(ph) + 0x1p-1074; */
-    r.lo = cbx_add_dn(pl, t);
-    r.hi = cbx_add_up(ph, t);
-    return r;
 }
 
 /* The translation column: t + x over x in [l, h], outward. */
@@ -171,41 +120,6 @@ static void col2_sound(double lo, double hi, double m0, double m1, double m2, do
 {
     (void)lo; (void)hi; (void)m0; (void)m1; (void)m2; (void)t;
     (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
-}
-
-/* One output axis of a row with at most one nonzero linear entry. */
-/*@ requires fin: map_fin(m0, m1, m2, t);
-    requires rm: -0x1p509 <= m0 <= 0x1p509 && -0x1p509 <= m1 <= 0x1p509 && -0x1p509 <= m2 <= 0x1p509;
-    requires rb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-                 && \is_finite(l2) && \is_finite(h2)
-                 && -0x1p509 <= l0 <= 0x1p509 && -0x1p509 <= h0 <= 0x1p509
-                 && -0x1p509 <= l1 <= 0x1p509 && -0x1p509 <= h1 <= 0x1p509
-                 && -0x1p509 <= l2 <= 0x1p509 && -0x1p509 <= h2 <= 0x1p509;
-    requires rt: -0x1p1018 <= t <= 0x1p1018;
-    requires ord: l0 <= h0 && l1 <= h1 && l2 <= h2;
-    requires sparse: (m1 == 0 && m2 == 0) || (m0 == 0 && m2 == 0) || (m0 == 0 && m1 == 0);
-    assigns \nothing;
-    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
-    ensures sound: below8(\result.lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-                   && above8(\result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    ensures tight: lo_tight(\result.lo, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-                   && hi_tight(\result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-*/
-static span sparse_axis(double m0, double m1, double m2, double t,
-                        double l0, double h0, double l1, double h1, double l2, double h2)
-{
-    span r;
-    if (m1 == 0.0 && m2 == 0.0) {
-        r = span_mul(m0, t, l0, h0);
-        col0_sound(r.lo, r.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    } else if (m0 == 0.0 && m2 == 0.0) {
-        r = span_mul(m1, t, l1, h1);
-        col1_sound(r.lo, r.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    } else {
-        r = span_mul(m2, t, l2, h2);
-        col2_sound(r.lo, r.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    }
-    return r;
 }
 
 /* One axis of the fast path: a full row whose ends hold the kernel's
@@ -316,37 +230,6 @@ static cbx_status fast_translate(const cbx_affine *a, const cbx_box *in, cbx_box
     return CBX_OK;
 }
 
-/* A sparse map (SCALE, PERMUTE) on a fast box: one product and one outward
- * addition per end. */
-/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
-    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
-    requires cls: is_permute(a);
-    requires fast: fast_ends(in, 0x1p509) && fast_lin(a, 0x1p509) && fast_tr(a);
-    assigns *out;
-    CBX_FAST_POST(a, in, out)
-*/
-static cbx_status fast_sparse(const cbx_affine *a, const cbx_box *in, cbx_box *out)
-{
-    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
-    full_row(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
-    full_row(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
-    full_row(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
-    span r0 = sparse_axis(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
-    span r1 = sparse_axis(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
-    span r2 = sparse_axis(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
-    axis_full(r0.lo, r0.hi, a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
-    axis_full(r1.lo, r1.hi, a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
-    axis_full(r2.lo, r2.hi, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
-    out->lo[0] = r0.lo; out->hi[0] = r0.hi;
-    out->lo[1] = r1.lo; out->hi[1] = r1.hi;
-    out->lo[2] = r2.lo; out->hi[2] = r2.hi;
-    return CBX_OK;
-}
-
 /* The fast-range checks (comparisons are false on NaN and infinities). */
 /*@ requires valid: \valid_read(in);
     requires b: \is_finite(b) && b > 0;
@@ -367,18 +250,6 @@ static int tr_ok(const cbx_affine *a)
 {
     const double T = 0x1p1018;
     return in_rng(a->m[0][3], T) && in_rng(a->m[1][3], T) && in_rng(a->m[2][3], T);
-}
-
-/*@ requires valid: \valid_read(a);
-    assigns \nothing;
-    ensures \result != 0 ==> fast_lin(a, 0x1p509);
-*/
-static int lin_ok(const cbx_affine *a)
-{
-    const double B = 0x1p509;
-    return in_rng(a->m[0][0], B) && in_rng(a->m[0][1], B) && in_rng(a->m[0][2], B)
-           && in_rng(a->m[1][0], B) && in_rng(a->m[1][1], B) && in_rng(a->m[1][2], B)
-           && in_rng(a->m[2][0], B) && in_rng(a->m[2][1], B) && in_rng(a->m[2][2], B);
 }
 
 /* The class kernels: the fast path on its range, the general kernel
@@ -410,21 +281,6 @@ static cbx_status kern_translate(const cbx_affine *a, const cbx_box *in, cbx_box
 {
     if (ends_ok(in, 0x1p1018) && tr_ok(a))
         return fast_translate(a, in, out);
-    return cbx_transform_box(a, in, out);
-}
-
-/*@ requires valid_a:   \valid_read(a);
-    requires valid_in:  \valid_read(in);
-    requires valid_out: \valid(out);
-    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
-    requires cls: is_permute(a);
-    assigns *out;
-    CBX_BOX_BEHAVIORS(a, in, out)
-*/
-static cbx_status kern_sparse(const cbx_affine *a, const cbx_box *in, cbx_box *out)
-{
-    if (ends_ok(in, 0x1p509) && lin_ok(a) && tr_ok(a))
-        return fast_sparse(a, in, out);
     return cbx_transform_box(a, in, out);
 }
 
@@ -475,33 +331,26 @@ static int translate_holds(const cbx_affine *a)
     return (n == 9) && cbx_is_fin(a->m[0][3]) && cbx_is_fin(a->m[1][3]) && cbx_is_fin(a->m[2][3]);
 }
 
-/* The class a caller passed, checked against the map: cls if the map is in
- * it, the general class otherwise, so a class passed apart from its map (an
- * easy mix-up) costs speed, never soundness.  IDENTITY and TRANSLATE (the
- * cheap kernels) are checked by equalities; SCALE and PERMUTE through
- * cbx_classify (each class is contained in the next). */
+/* The class a caller passed, checked against the map: IDENTITY or
+ * TRANSLATE if the map is in it (equalities only: translate_holds), the
+ * general class otherwise, so a class passed apart from its map (an easy
+ * mix-up) costs speed, never soundness.  SCALE and PERMUTE run the general
+ * kernel: on the fast range it is branch-free and faster than their
+ * one-product kernels were (which branched on the sign of the entry). */
 /*@ requires valid: \valid_read(a);
     assigns \nothing;
     ensures ok: class_ok(a, \result);
 */
 static cbx_class class_checked(const cbx_affine *a, cbx_class cls)
 {
-    if (cls == CBX_CLASS_GENERAL)
+    if (cls != CBX_CLASS_IDENTITY && cls != CBX_CLASS_TRANSLATE)
         return CBX_CLASS_GENERAL;
-    if (cls == CBX_CLASS_IDENTITY || cls == CBX_CLASS_TRANSLATE) {
-        if (!translate_holds(a))
-            return CBX_CLASS_GENERAL;
-        if (cls == CBX_CLASS_TRANSLATE)
-            return CBX_CLASS_TRANSLATE;
-        if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0)
-            return CBX_CLASS_IDENTITY;
+    if (!translate_holds(a))
         return CBX_CLASS_GENERAL;
-    }
-    {
-        cbx_class c = cbx_classify(a);
-        if (cls >= CBX_CLASS_GENERAL && cls <= c)
-            return cls;
-    }
+    if (cls == CBX_CLASS_TRANSLATE)
+        return CBX_CLASS_TRANSLATE;
+    if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0)
+        return CBX_CLASS_IDENTITY;
     return CBX_CLASS_GENERAL;
 }
 
@@ -513,8 +362,6 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls0, const cbx_b
         r = kern_identity(a, in, out);
     else if (cls == CBX_CLASS_TRANSLATE)
         r = kern_translate(a, in, out);
-    else if (cls == CBX_CLASS_SCALE || cls == CBX_CLASS_PERMUTE)
-        r = kern_sparse(a, in, out);
     else
         r = cbx_transform_box(a, in, out);
     return r;

@@ -177,9 +177,9 @@ cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_b
  * cbx_classify sorts a map into the smallest class that holds it (every
  * entry finite; zeros and ones compared exactly, -0 is 0).
  * cbx_transform_box_as runs the class's own kernel: IDENTITY copies the
- * box, TRANSLATE does 6 outward-rounded additions, SCALE and PERMUTE one
- * product and one outward-rounded addition per end, GENERAL is
- * cbx_transform_box.  Its contract is cbx_transform_box's, word for word
+ * box, TRANSLATE does 6 outward-rounded additions; SCALE, PERMUTE and
+ * GENERAL run cbx_transform_box (its branch-free kernel is faster than a
+ * one-product kernel that branches on signs).  Its contract is cbx_transform_box's, word for word
  * (same statuses, same special and infinite cases, the same containment and
  * tightness statement), proven for every class; the result is never looser
  * than cbx_transform_box's (GMP-checked).  Inputs outside a class kernel's
