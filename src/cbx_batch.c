@@ -14,7 +14,6 @@
  */
 #include "certbox.h"
 #include "cbx_onebox.h"
-#include "cbx_fast.h"
 /* The per-box kernel: the class kernel in binary64, the general one in
  * binary32 (where CBX_CLS_ARG and the class clauses vanish). */
 #if CBX_INST == 64
@@ -41,7 +40,6 @@ static int severity(cbx_status s)
     return 0;
 }
 
-
 /* Write out[k]; every other out[j] is left alone (a small goal of its own:
  * with the box promise in context the provers do not find this frame). */
 /*@ requires valid: \valid(out + (0 .. n - 1));
@@ -54,187 +52,6 @@ static void put_box(cbx_box *out, size_t k, size_t n, cbx_box o)
 {
     (void)n;
     out[k] = o;
-}
-
-/* ---- the vectorised block ----------------------------------------------
- * Under a map of the fast range, CBX_LANES boxes of the fast range at a
- * time: the boxes are copied into one array per end (structure of arrays),
- * the kernel (src/cbx_fast.h) runs on them in a loop with a constant trip
- * count and no branch, which compilers vectorise (gcc -O2: 16-byte vectors;
- * -fopt-info-vec shows it), and the ends are written back box by box.  The
- * same operations in the same order as cbx_transform_box: the same bits. */
-#define CBX_LANES 8
-
-/* 1 when the CBX_LANES boxes from in on are all in the fast range. */
-/*@ requires valid: \valid_read(in + (0 .. CBX_LANES - 1));
-    assigns \nothing;
-    ensures fast: \result != 0 ==> \forall integer j; 0 <= j < CBX_LANES ==> box_fast(in + j);
-*/
-static int block_fast(const cbx_box *in)
-{
-    int c = 0;
-    int j;
-    /*@ loop invariant rng: 0 <= j <= CBX_LANES && 0 <= c <= j;
-        loop invariant all: c == j ==> \forall integer i; 0 <= i < j ==> box_fast(in + i);
-        loop assigns j, c;
-        loop variant CBX_LANES - j;
-    */
-    for (j = 0; j < CBX_LANES; j++)
-        c += cbx_box_fast(in + j) != 0;
-    return c == CBX_LANES;
-}
-
-/* One box's promise from the kernel's statements on its values (lemma
- * function).  The kernel ran on copies of the box's ends (v0 .. w2, the
- * structure of arrays), equal as reals to the ends l0 .. h2 and finite like
- * them: the statements depend only on that, so they carry over.  A map and
- * a box of the fast range have no NaN and no empty axis, so box_done_m is
- * the three axes' statement, with CBX_OK. */
-/*@ requires fin: map_fin(a00, a01, a02, a03) && map_fin(a10, a11, a12, a13) && map_fin(a20, a21, a22, a23);
-    requires box: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
-                  && \is_finite(l2) && \is_finite(h2) && l0 <= h0 && l1 <= h1 && l2 <= h2;
-    requires cpy: \is_finite(v0) && \is_finite(w0) && \is_finite(v1) && \is_finite(w1)
-                  && \is_finite(v2) && \is_finite(w2)
-                  && v0 == l0 && w0 == h0 && v1 == l1 && w1 == h1 && v2 == l2 && w2 == h2;
-    requires full: row_full(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
-                   && row_full(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
-                   && row_full(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)
-                   && row_full(a00, a01, a02, a03, v0, w0, v1, w1, v2, w2)
-                   && row_full(a10, a11, a12, a13, v0, w0, v1, w1, v2, w2)
-                   && row_full(a20, a21, a22, a23, v0, w0, v1, w1, v2, w2);
-    requires ax: axis_sound_s(O.lo[0], O.hi[0], a00, a01, a02, a03, v0, w0, v1, w1, v2, w2)
-                 && axis_sound_s(O.lo[1], O.hi[1], a10, a11, a12, a13, v0, w0, v1, w1, v2, w2)
-                 && axis_sound_s(O.lo[2], O.hi[2], a20, a21, a22, a23, v0, w0, v1, w1, v2, w2);
-    assigns \nothing;
-    ensures done: box_done_m(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23,
-                             l0, h0, l1, h1, l2, h2, O);
-    ensures sev: box_sev_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23,
-                           l0, h0, l1, h1, l2, h2, 0);
-*/
-static void lane_done(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11,
-                      cbx_fp a12, cbx_fp a13, cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23,
-                      cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2,
-                      cbx_fp v0, cbx_fp w0, cbx_fp v1, cbx_fp w1, cbx_fp v2, cbx_fp w2, cbx_box O)
-{
-    (void)a00; (void)a01; (void)a02; (void)a03; (void)a10; (void)a11; (void)a12; (void)a13;
-    (void)a20; (void)a21; (void)a22; (void)a23;
-    (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
-    (void)v0; (void)w0; (void)v1; (void)w1; (void)v2; (void)w2; (void)O;
-    /*@ assert b0: below8(O.lo[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
-                   && above8(O.hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
-                   && lo_tight(O.lo[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2)
-                   && hi_tight(O.hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2); */
-    /*@ assert b1: below8(O.lo[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
-                   && above8(O.hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
-                   && lo_tight(O.lo[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2)
-                   && hi_tight(O.hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2); */
-    /*@ assert b2: below8(O.lo[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)
-                   && above8(O.hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)
-                   && lo_tight(O.lo[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2)
-                   && hi_tight(O.hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2); */
-    /*@ assert f: \is_finite(O.lo[0]) && \is_finite(O.hi[0]) && \is_finite(O.lo[1])
-                  && \is_finite(O.hi[1]) && \is_finite(O.lo[2]) && \is_finite(O.hi[2]); */
-    /*@ assert s0: axis_sound_s(O.lo[0], O.hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2); */
-    /*@ assert s1: axis_sound_s(O.lo[1], O.hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2); */
-    /*@ assert s2: axis_sound_s(O.lo[2], O.hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2); */
-    /*@ assert nn: !nan_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23, l0, h0, l1, h1, l2, h2); */
-    /*@ assert ne: !empty_v(l0, h0, l1, h1, l2, h2); */
-    /*@ assert dv: box_done_v(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23,
-                              l0, h0, l1, h1, l2, h2, O.lo[0], O.hi[0], O.lo[1], O.hi[1], O.lo[2], O.hi[2]); */
-}
-
-/* Boxes k .. k + CBX_LANES - 1, all of the fast range, under a map of the
- * fast range: each out[j] gets its box's promise with CBX_OK; every other
- * out[j] is left alone. */
-/*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
-    requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
-    requires k: k + CBX_LANES <= n;
-    requires fast: map_fast(a) && \forall integer j; k <= j < k + CBX_LANES ==> box_fast(in + j);
-    assigns out[k .. k + CBX_LANES - 1];
-    ensures done: \forall integer j; k <= j < k + CBX_LANES ==>
-      box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j])
-      && box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), 0);
-    ensures frame: \forall integer j; 0 <= j < n && (j < k || k + CBX_LANES <= j) ==>
-      out[j] == \at(out[j], Pre);
-*/
-static void fast_block(const cbx_affine *a, const cbx_box *in, cbx_box *out, size_t k, size_t n)
-{
-    cbx_fp L0[CBX_LANES], H0[CBX_LANES], L1[CBX_LANES], H1[CBX_LANES], L2[CBX_LANES], H2[CBX_LANES];
-    cbx_fp P0[CBX_LANES], Q0[CBX_LANES], P1[CBX_LANES], Q1[CBX_LANES], P2[CBX_LANES], Q2[CBX_LANES];
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
-    size_t j;
-    /*@ loop invariant rng: 0 <= j <= CBX_LANES;
-        loop invariant got: \forall integer i; 0 <= i < j ==>
-          L0[i] == in[k + i].lo[0] && H0[i] == in[k + i].hi[0] && L1[i] == in[k + i].lo[1]
-          && H1[i] == in[k + i].hi[1] && L2[i] == in[k + i].lo[2] && H2[i] == in[k + i].hi[2];
-        loop invariant fin: \forall integer i; 0 <= i < j ==>
-          \is_finite(L0[i]) && \is_finite(H0[i]) && \is_finite(L1[i]) && \is_finite(H1[i])
-          && \is_finite(L2[i]) && \is_finite(H2[i]);
-        loop invariant fast: \forall integer i; 0 <= i < j ==>
-          -CBX_SB <= L0[i] && L0[i] <= H0[i] && H0[i] <= CBX_SB
-          && -CBX_SB <= L1[i] && L1[i] <= H1[i] && H1[i] <= CBX_SB
-          && -CBX_SB <= L2[i] && L2[i] <= H2[i] && H2[i] <= CBX_SB;
-        loop assigns j, L0[0 .. CBX_LANES - 1], H0[0 .. CBX_LANES - 1], L1[0 .. CBX_LANES - 1],
-                     H1[0 .. CBX_LANES - 1], L2[0 .. CBX_LANES - 1], H2[0 .. CBX_LANES - 1];
-        loop variant CBX_LANES - j;
-    */
-    for (j = 0; j < CBX_LANES; j++) {
-        /*@ assert lane: box_fast(in + (k + j)); */
-        L0[j] = in[k + j].lo[0]; H0[j] = in[k + j].hi[0];
-        L1[j] = in[k + j].lo[1]; H1[j] = in[k + j].hi[1];
-        L2[j] = in[k + j].lo[2]; H2[j] = in[k + j].hi[2];
-    }
-    /*@ loop invariant rng: 0 <= j <= CBX_LANES;
-        loop invariant ax: \forall integer i; 0 <= i < j ==>
-          axis_sound_s(P0[i], Q0[i], a00, a01, a02, a03, L0[i], H0[i], L1[i], H1[i], L2[i], H2[i])
-          && axis_sound_s(P1[i], Q1[i], a10, a11, a12, a13, L0[i], H0[i], L1[i], H1[i], L2[i], H2[i])
-          && axis_sound_s(P2[i], Q2[i], a20, a21, a22, a23, L0[i], H0[i], L1[i], H1[i], L2[i], H2[i]);
-        loop assigns j, P0[0 .. CBX_LANES - 1], Q0[0 .. CBX_LANES - 1], P1[0 .. CBX_LANES - 1],
-                     Q1[0 .. CBX_LANES - 1], P2[0 .. CBX_LANES - 1], Q2[0 .. CBX_LANES - 1];
-        loop variant CBX_LANES - j;
-    */
-    for (j = 0; j < CBX_LANES; j++) {
-        cbx_ends r0 = cbx_fast_axis(a00, a01, a02, a03, L0[j], H0[j], L1[j], H1[j], L2[j], H2[j]);
-        cbx_ends r1 = cbx_fast_axis(a10, a11, a12, a13, L0[j], H0[j], L1[j], H1[j], L2[j], H2[j]);
-        cbx_ends r2 = cbx_fast_axis(a20, a21, a22, a23, L0[j], H0[j], L1[j], H1[j], L2[j], H2[j]);
-        P0[j] = r0.lo; Q0[j] = r0.hi;
-        P1[j] = r1.lo; Q1[j] = r1.hi;
-        P2[j] = r2.lo; Q2[j] = r2.hi;
-    }
-    /*@ loop invariant rng: 0 <= j <= CBX_LANES;
-        loop invariant done: \forall integer i; k <= i < k + j ==>
-          box_done_m(CBX_AV(a, Pre), CBX_BV(in + i, Pre), out[i])
-          && box_sev_v(CBX_AV(a, Pre), CBX_BV(in + i, Pre), 0);
-        loop invariant frame: \forall integer i; 0 <= i < n && (i < k || k + j <= i) ==>
-          out[i] == \at(out[i], Pre);
-        loop assigns j, out[k .. k + CBX_LANES - 1];
-        loop variant CBX_LANES - j;
-    */
-    for (j = 0; j < CBX_LANES; j++) {
-        cbx_box o;
-        o.lo[0] = P0[j]; o.hi[0] = Q0[j];
-        o.lo[1] = P1[j]; o.hi[1] = Q1[j];
-        o.lo[2] = P2[j]; o.hi[2] = Q2[j];
-        /*@ assert lane: box_fast(in + (k + j)); */
-        cbx_fast_row(a00, a01, a02, a03, in[k + j].lo[0], in[k + j].hi[0], in[k + j].lo[1],
-                     in[k + j].hi[1], in[k + j].lo[2], in[k + j].hi[2]);
-        cbx_fast_row(a10, a11, a12, a13, in[k + j].lo[0], in[k + j].hi[0], in[k + j].lo[1],
-                     in[k + j].hi[1], in[k + j].lo[2], in[k + j].hi[2]);
-        cbx_fast_row(a20, a21, a22, a23, in[k + j].lo[0], in[k + j].hi[0], in[k + j].lo[1],
-                     in[k + j].hi[1], in[k + j].lo[2], in[k + j].hi[2]);
-        cbx_fast_row(a00, a01, a02, a03, L0[j], H0[j], L1[j], H1[j], L2[j], H2[j]);
-        cbx_fast_row(a10, a11, a12, a13, L0[j], H0[j], L1[j], H1[j], L2[j], H2[j]);
-        cbx_fast_row(a20, a21, a22, a23, L0[j], H0[j], L1[j], H1[j], L2[j], H2[j]);
-        lane_done(a00, a01, a02, a03, a10, a11, a12, a13, a20, a21, a22, a23,
-                  in[k + j].lo[0], in[k + j].hi[0], in[k + j].lo[1], in[k + j].hi[1],
-                  in[k + j].lo[2], in[k + j].hi[2], L0[j], H0[j], L1[j], H1[j], L2[j], H2[j], o);
-        put_box(out, k + j, n, o);
-        /*@ assert this: \forall integer i; i == k + j ==>
-              box_done_m(CBX_AV(a, Pre), CBX_BV(in + i, Pre), out[i])
-              && box_sev_v(CBX_AV(a, Pre), CBX_BV(in + i, Pre), 0); */
-    }
 }
 
 /* Box k of the batch, and what it leaves alone: every other out[j]. */
@@ -262,15 +79,14 @@ static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in, cbx
 /* The loop over the boxes under one map, checked by the caller. */
 /*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
-    requires fast: fast != 0 ==> map_fast(a);
     assigns out[0 .. n - 1];
     CBX_BATCH_POST(a)
 */
-static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_box *in,
+static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in,
                         cbx_box *out, size_t n)
 {
     cbx_status worst = CBX_OK;
-    size_t k = 0;
+    size_t k;
     /*@ loop invariant rng: 0 <= k <= n;
         loop invariant done: \forall integer j; 0 <= j < k ==>
           box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]);
@@ -282,24 +98,14 @@ static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_b
         loop assigns k, worst, out[0 .. n - 1];
         loop variant n - k;
     */
-    while (k < n) {
-        if (fast && n - k >= CBX_LANES && block_fast(in + k)) {
-            fast_block(a, in, out, k, n);
-            /*@ assert blk: \forall integer j; k <= j < k + CBX_LANES ==>
-                  box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j])
-                  && box_sev_le(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(worst)); */
-            /*@ assert one: \forall integer j; j == k ==> box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), 0); */
-            k += CBX_LANES;
-        } else {
-            cbx_status s = step(a CBX_CLS_ARG, in, out, k, n);
-            /*@ assert this: \forall integer j; j == k ==>
-                  box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]); */
-            /*@ assert sevk: \forall integer j; j == k ==>
-                  box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(s)); */
-            if (severity(s) > severity(worst))
-                worst = s;
-            k++;
-        }
+    for (k = 0; k < n; k++) {
+        cbx_status s = step(a CBX_CLS_ARG, in, out, k, n);
+        /*@ assert this: \forall integer j; j == k ==>
+              box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]); */
+        /*@ assert sevk: \forall integer j; j == k ==>
+              box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(s)); */
+        if (severity(s) > severity(worst))
+            worst = s;
     }
     /*@ assert kn: k == n; */
     return worst;
@@ -310,8 +116,7 @@ cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *
 #if CBX_INST == 64
     cbx_class cls = cbx_classify(a);   /* once per call */
 #endif
-    int fast = CBX_IS_GENERAL && cbx_map_fast(a);
-    return batch(a CBX_CLS_ARG, fast, in, out, n);
+    return batch(a CBX_CLS_ARG, in, out, n);
 }
 
 /* Nothing of *p but its map is used (the class is found again, once per

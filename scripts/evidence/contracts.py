@@ -15,23 +15,27 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 
 def macro(name):
-    """The body of a contract macro of specs/cbx_class.h (CBX_BOX_BEHAVIORS)."""
-    text = open(os.path.join(ROOT, 'specs', 'cbx_class.h'), encoding='utf-8').read()
+    """The parameters and body of a contract macro of specs/cbx_logic.h
+    (CBX_BOX_BEHAVIORS, CBX_BATCH_POST)."""
+    text = open(os.path.join(ROOT, 'specs', 'cbx_logic.h'), encoding='utf-8').read()
     m = re.search(r'#define %s\(([^)]*)\)\s*\\\n(.*?)(?<!\\)\n' % name, text, re.S)
     params = [p.strip() for p in m.group(1).split(',')]
     body = re.sub(r'\\\n', '\n', m.group(2))
     return params, body
 
 
+MACROS = ('CBX_BOX_BEHAVIORS', 'CBX_BATCH_POST')
+
+
 def expand(contract):
-    """Expand CBX_BOX_BEHAVIORS(a, in, out) (the one contract macro used)."""
+    """Expand the contract macros (MACROS) used in a contract."""
     def rep(m):
-        params, body = macro('CBX_BOX_BEHAVIORS')
-        args = [a.strip() for a in m.group(1).split(',')]
+        params, body = macro(m.group(1))
+        args = [a.strip() for a in m.group(2).split(',')]
         for p, a in zip(params, args):
-            body = re.sub(r'\b%s\b' % re.escape(p), a, body)
+            body = re.sub(r'\b%s\b' % re.escape(p), lambda _m, a=a: a, body)
         return body
-    return re.sub(r'CBX_BOX_BEHAVIORS\(([^)]*)\)', rep, contract)
+    return re.sub(r'\b(%s)\(([^)]*)\)' % '|'.join(MACROS), rep, contract)
 
 
 def functions():
@@ -40,7 +44,7 @@ def functions():
     for fname, fam in (('cbx_api.h', 'both'), ('certbox.h', '64')):
         text = open(os.path.join(ROOT, 'src', fname), encoding='utf-8').read()
         for m in re.finditer(r'((?:/\*(?!@)(?:[^*]|\*(?!/))*\*/\s*)*)/\*@(.*?)\*/\s*\n'
-                             r'((?:cbx_status|cbx_class|unsigned|const char \*)\s+(cbx_\w+)\((?:[^;])*\);)',
+                             r'((?:cbx_status|cbx_class|unsigned|void|const char \*)\s+(cbx_\w+)\((?:[^;])*\);)',
                              text, re.S):
             doc = m.group(1).strip()
             docs = re.findall(r'/\*(?:[^*]|\*(?!/))*\*/', doc)
