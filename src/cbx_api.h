@@ -93,7 +93,12 @@ cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *
  * cbx_transform_box_prep.  Its promise is cbx_transform_boxes' on p->a. */
 /*@ requires valid: \valid_read(a) && \valid(p) && \separated(a, p);
     assigns *p;
-    ensures copy: p->a == \at(*a, Pre);
+    ensures copy: p->a.m[0][0] == \at(a->m[0][0], Pre) && p->a.m[0][1] == \at(a->m[0][1], Pre)
+      && p->a.m[0][2] == \at(a->m[0][2], Pre) && p->a.m[0][3] == \at(a->m[0][3], Pre)
+      && p->a.m[1][0] == \at(a->m[1][0], Pre) && p->a.m[1][1] == \at(a->m[1][1], Pre)
+      && p->a.m[1][2] == \at(a->m[1][2], Pre) && p->a.m[1][3] == \at(a->m[1][3], Pre)
+      && p->a.m[2][0] == \at(a->m[2][0], Pre) && p->a.m[2][1] == \at(a->m[2][1], Pre)
+      && p->a.m[2][2] == \at(a->m[2][2], Pre) && p->a.m[2][3] == \at(a->m[2][3], Pre);
     ensures prep: prepared(p);
 */
 void cbx_prepare(const cbx_affine *a, cbx_prepared *p);

@@ -249,7 +249,14 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
 
 void cbx_prepare(const cbx_affine *a, cbx_prepared *p)
 {
-    p->a = *a;
+    /* entry by entry: a struct copy may compile to a call to memcpy, and
+     * the library needs no libc (make embedded) */
+    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    p->a.m[0][0] = a00; p->a.m[0][1] = a01; p->a.m[0][2] = a02; p->a.m[0][3] = a03;
+    p->a.m[1][0] = a10; p->a.m[1][1] = a11; p->a.m[1][2] = a12; p->a.m[1][3] = a13;
+    p->a.m[2][0] = a20; p->a.m[2][1] = a21; p->a.m[2][2] = a22; p->a.m[2][3] = a23;
     p->fast = cbx_map_fast(&p->a);
 #if CBX_INST == 64
     p->cls = (int)cbx_classify(&p->a);
