@@ -179,19 +179,18 @@ cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_b
  * cbx_transform_box_as runs the class's own kernel: IDENTITY copies the
  * box, TRANSLATE does 6 outward-rounded additions; SCALE, PERMUTE and
  * GENERAL run cbx_transform_box (its branch-free kernel is faster than a
- * one-product kernel that branches on signs).  Its contract is cbx_transform_box's, word for word
- * (same statuses, same special and infinite cases, the same containment and
- * tightness statement), proven for every class; the result is never looser
- * than cbx_transform_box's (GMP-checked).  Inputs outside a class kernel's
- * fast range (any end infinite or above 2^509 in magnitude for SCALE and
- * PERMUTE, 2^1018 for IDENTITY and TRANSLATE; empty or NaN boxes) take the
- * general kernel.
+ * one-product kernel that branches on signs).  Its contract is
+ * cbx_transform_box's, word for word (same statuses, same special and
+ * infinite cases, the same containment and tightness statement), proven
+ * for every value of cls; the result is never looser than
+ * cbx_transform_box's (GMP-checked).  Inputs outside a class kernel's fast
+ * range (any end infinite or above 2^1018 in magnitude, |t| above 2^1018;
+ * empty or NaN boxes) take the general kernel.
  * cls is a hint: classify once, then apply to many boxes.  It is checked
- * against the map on every call (cbx_classify's comparisons, well
- * predicted for a repeated map): a class the map is not in (a class kept
- * apart from its map and mixed up) runs the general kernel, so the box is
- * sound for any cls; a larger class than cbx_classify(a) (GENERAL) is
- * always allowed.  cbx_prepare keeps the class with its map. */
+ * against the map on every call (IDENTITY and TRANSLATE by 9 equalities and
+ * 3 finiteness tests): a class the map is not in (a class kept apart from
+ * its map and mixed up) runs the general kernel, so the box is sound for
+ * any cls.  cbx_prepare keeps the class with its map. */
 /*@ requires valid: \valid_read(a);
     assigns \nothing;
     ensures holds: class_ok(a, \result);
