@@ -22,6 +22,8 @@
 #   MUT_HALF_N    random maps of test_halfspace (default 40)
 #   MUT_TIGHT_N   thousands of cases of test_tight (default 40)
 #   MUT_FLOAT_N   random cases of test_float   (default 50000)
+#   MUT_CLASSES_N random cases of test_classes (default 20000; its misuse part
+#                 checks every class value against the exact image)
 #   MUT_SEED      seed of the random cases     (default 1)
 #   MUT_TIMEOUT   seconds per test run         (default 30)
 #   MUT_LIST      mutant list                  (default scripts/mutants.txt)
@@ -149,8 +151,8 @@ done
 cp -p "$ROOT/Makefile" "$BASE/Makefile"
 rm -rf "$BASE/build"
 
-TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_float"
-BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_float"
+TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_float test_classes"
+BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_float build/test_classes"
 args_of() {
     case $1 in
     test_badinput) echo "" ;;
@@ -163,6 +165,7 @@ args_of() {
     test_batch) echo "50 $SEED" ;;
     test_tight) echo "${MUT_TIGHT_N:-40} $SEED" ;;
     test_float) echo "${MUT_FLOAT_N:-50000} $SEED" ;;
+    test_classes) echo "${MUT_CLASSES_N:-20000} $SEED" ;;
     esac
 }
 # $NICE, $BINS and the test arguments are meant to be split into words.
