@@ -396,4 +396,10 @@ const char *xu_cls_str(int cls, char buf[16]);
 unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long dflt,
                               const char *usage);
 
+/* Literal maps and boxes for hard-case tables: a row is {m[i][0], m[i][1],
+ * m[i][2], t_i}; a box is given per axis as (lo0, hi0, lo1, hi1, lo2, hi2). */
+#define XU_ROW(a, b, c, t) { a, b, c, t }
+#define XU_MAT(r0, r1, r2) { { r0, r1, r2 } }
+#define XU_BOX(l0, h0, l1, h1, l2, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
+
 #endif /* EXACT_UTIL_H */

@@ -1228,31 +1228,28 @@ static int misuse_case(xu_exact *x, ustats *st, const cbx_affine *a, const cbx_b
  * the hint was checked, IDENTITY on diag(2,2,2) returned [0,1]^3 with
  * CBX_OK (the identity kernel copies the box). */
 typedef struct misuse_row { const char *name; cbx_affine a; cbx_box in, img; } misuse_row;
-#define MROW(a, b, c, t) { a, b, c, t }
-#define MMAT(r0, r1, r2) { { r0, r1, r2 } }
-#define MBOX(l0, l1, l2, h0, h1, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
 static const misuse_row misuse_table[] = {
     { "diag(2,2,2) on [0,1]^3",
-      MMAT(MROW(2, 0, 0, 0), MROW(0, 2, 0, 0), MROW(0, 0, 2, 0)),
-      MBOX(0, 0, 0, 1, 1, 1), MBOX(0, 0, 0, 2, 2, 2) },
+      XU_MAT(XU_ROW(2, 0, 0, 0), XU_ROW(0, 2, 0, 0), XU_ROW(0, 0, 2, 0)),
+      XU_BOX(0, 1, 0, 1, 0, 1), XU_BOX(0, 2, 0, 2, 0, 2) },
     { "translation (1,2,3) on [0,1]^3",
-      MMAT(MROW(1, 0, 0, 1), MROW(0, 1, 0, 2), MROW(0, 0, 1, 3)),
-      MBOX(0, 0, 0, 1, 1, 1), MBOX(1, 2, 3, 2, 3, 4) },
+      XU_MAT(XU_ROW(1, 0, 0, 1), XU_ROW(0, 1, 0, 2), XU_ROW(0, 0, 1, 3)),
+      XU_BOX(0, 1, 0, 1, 0, 1), XU_BOX(1, 2, 2, 3, 3, 4) },
     { "diag(-1,3,1/2) + (0,0,1)",
-      MMAT(MROW(-1, 0, 0, 0), MROW(0, 3, 0, 0), MROW(0, 0, 0.5, 1)),
-      MBOX(0, -1, 2, 1, 2, 4), MBOX(-1, -3, 2, 0, 6, 3) },
+      XU_MAT(XU_ROW(-1, 0, 0, 0), XU_ROW(0, 3, 0, 0), XU_ROW(0, 0, 0.5, 1)),
+      XU_BOX(0, 1, -1, 2, 2, 4), XU_BOX(-1, 0, -3, 6, 2, 3) },
     { "permutation (y, -z, 2x)",
-      MMAT(MROW(0, 1, 0, 0), MROW(0, 0, -1, 0), MROW(2, 0, 0, 0)),
-      MBOX(0, 2, 4, 1, 3, 5), MBOX(2, -5, 0, 3, -4, 2) },
+      XU_MAT(XU_ROW(0, 1, 0, 0), XU_ROW(0, 0, -1, 0), XU_ROW(2, 0, 0, 0)),
+      XU_BOX(0, 1, 2, 3, 4, 5), XU_BOX(2, 3, -5, -4, 0, 2) },
     { "shear x + y",
-      MMAT(MROW(1, 1, 0, 0), MROW(0, 1, 0, 0), MROW(0, 0, 1, 0)),
-      MBOX(0, 2, 4, 1, 3, 5), MBOX(2, 2, 4, 4, 3, 5) },
+      XU_MAT(XU_ROW(1, 1, 0, 0), XU_ROW(0, 1, 0, 0), XU_ROW(0, 0, 1, 0)),
+      XU_BOX(0, 1, 2, 3, 4, 5), XU_BOX(2, 4, 2, 3, 4, 5) },
     { "huge diag(2^600, 2^600, 1) + (0, 0, 2^1000)",
-      MMAT(MROW(0x1p600, 0, 0, 0), MROW(0, 0x1p600, 0, 0), MROW(0, 0, 1, 0x1p1000)),
-      MBOX(0, 0, 0, 1, 1, 1), MBOX(0, 0, 0x1p1000, 0x1p600, 0x1p600, 0x1p1000) },
+      XU_MAT(XU_ROW(0x1p600, 0, 0, 0), XU_ROW(0, 0x1p600, 0, 0), XU_ROW(0, 0, 1, 0x1p1000)),
+      XU_BOX(0, 1, 0, 1, 0, 1), XU_BOX(0, 0x1p600, 0, 0x1p600, 0x1p1000, 0x1p1000) },
     { "huge permutation (2^1000 z, y, x)",
-      MMAT(MROW(0, 0, 0x1p1000, 0), MROW(0, 1, 0, 0), MROW(1, 0, 0, 0)),
-      MBOX(0, 0, 0, 1, 1, 1), MBOX(0, 0, 0, 0x1p1000, 1, 1) },
+      XU_MAT(XU_ROW(0, 0, 0x1p1000, 0), XU_ROW(0, 1, 0, 0), XU_ROW(1, 0, 0, 0)),
+      XU_BOX(0, 1, 0, 1, 0, 1), XU_BOX(0, 0x1p1000, 0, 1, 0, 1) },
 };
 #define N_MISUSE_TABLE ((int)(sizeof misuse_table / sizeof misuse_table[0]))
 

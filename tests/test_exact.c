@@ -53,9 +53,9 @@ typedef struct hard_case {
 
 /* A row is {m[i][0], m[i][1], m[i][2], t_i}; a box is given per axis as
  * (lo0, hi0, lo1, hi1, lo2, hi2), which reads better than lo[] then hi[]. */
-#define ROW(a, b, c, t) { a, b, c, t }
-#define MAT(r0, r1, r2) { { r0, r1, r2 } }
-#define BOX(l0, h0, l1, h1, l2, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
+#define ROW XU_ROW
+#define MAT XU_MAT
+#define BOX XU_BOX
 
 static const hard_case hard_cases[] = {
     /* --- permutations and sign flips: exact image representable ------ */
