@@ -1,9 +1,19 @@
-# certbox: proven, tight axis-aligned bounding boxes.
-#   make          build the static and shared libraries and the demo (build/)
-#   make demo     run the demo (the main job)
-#   make check    run every test, proofs included (installs missing packages)
-#   make proof    re-run the Frama-C/WP proofs and rewrite proofs/report.md
-#   make install  PREFIX=/usr/local DESTDIR=
+# certbox: proven, tight axis-aligned bounding boxes.  Everything goes to build/.
+#   make          the static and shared libraries (build/libcertbox.a,
+#                 build/libcertbox.so*), build/certbox.pc and the scene tool
+#                 build/certbox: a C compiler is all it needs (no GMP/MPFR)
+#   make demo     build the demo (links the GMP/MPFR test oracle) and run it,
+#                 then the scene tool on examples/robot.scene (installs
+#                 missing packages)
+#   make check    every test, proofs included (installs missing packages);
+#                 ends by checking that the run left the git checkout as it
+#                 found it (a clean clone stays clean)
+#   make install  PREFIX=/usr/local DESTDIR=: the libraries, certbox.h and the
+#                 headers it includes, certbox.pc, and the CMake package
+#                 (LIBDIR/cmake/certbox: find_package(certbox), targets
+#                 certbox::certbox and certbox::certbox_static)
+#   make proof    re-run the Frama-C/WP proofs; report in build/proof/report.md
+#   make proof-report  copy that report to the committed proofs/report.md
 #   make mutants  mutation check: deliberate faults must all be caught
 #   make fuzz     libFuzzer harnesses with the exact oracle (60 s each)
 
@@ -13,6 +23,11 @@ PREFIX    ?= /usr/local
 LIBDIR    ?= $(PREFIX)/lib
 INCDIR    ?= $(PREFIX)/include
 PCDIR     ?= $(LIBDIR)/pkgconfig
+CMAKEDIR  ?= $(LIBDIR)/cmake/certbox
+
+# Plain make builds `all`, whatever rule comes first below (the $(eval ...)
+# rules for the *_f.o objects would otherwise be the default goal).
+.DEFAULT_GOAL := all
 
 CC       ?= cc
 CXX      ?= c++
@@ -39,7 +54,9 @@ $(foreach f,$(FAMSRC),$(eval $(B)/obj/$(f)_f.o $(B)/pic/$(f)_f.o: src/$(f).c))
 SONAME  := libcertbox.so.$(SOVERSION)
 
 .PHONY: fuzz fuzz-check mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
-all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/demo $(B)/certbox $(B)/certbox.pc
+# What a user builds: only a C compiler needed.  The demo and the tests link
+# the GMP/MPFR oracle: make demo, make test, make check build them.
+all: $(B)/libcertbox.a $(B)/libcertbox.so $(B)/certbox.pc $(B)/certbox
 
 $(B)/obj/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(@D)
@@ -65,10 +82,14 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 TESTUTIL := tests/exact_util.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
-# The scene tool (issue 6): src/scene/, built with the library's flags.
-SCENESRC := src/scene/scene.c
+# The scene tool (issue 6): src/scene/, built with the library's flags.  An
+# optional dependency of the tool adds its flags to TOOL_CFLAGS and its
+# libraries to TOOL_LIBS (before -lm); the library itself never links them.
+SCENESRC   := src/scene/scene.c
+TOOL_CFLAGS :=
+TOOL_LIBS   :=
 $(B)/certbox: src/scene/main.c $(SCENESRC) src/scene/scene.h $(B)/libcertbox.a
-	$(CC) $(ALLCFLAGS) src/scene/main.c $(SCENESRC) $(B)/libcertbox.a -lm -o $@
+	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) src/scene/main.c $(SCENESRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests -Isrc/scene $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
@@ -194,10 +215,14 @@ check-deps-proof:
 # Each step stops the run on failure; the last line counts the steps.
 # Independent steps run two at a time (each is single-threaded; the proofs
 # and the smoke teeth use both cores on their own).
-# Each step's time is printed (check: NAME: N s).
+# Each step's time is printed (check: NAME: N s).  The last step fails if
+# the run changed the git checkout (scripts/clean_tree.sh): every generated
+# file belongs in build/.
 TIMED = sh scripts/timed.sh
+.PHONY: clean-tree-check
 check: check-deps
-	$(TIMED) build $(MAKE) -j2 all $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
+	@sh scripts/clean_tree.sh save $(B)/clean-tree.before
+	$(TIMED) build $(MAKE) -j2 all $(B)/demo $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
 	$(TIMED) header-check $(MAKE) header-check
 	$(TIMED) test+test-san $(MAKE) -j2 test test-san
 	$(TIMED) ieee-check+bench-smoke+install-check+embedded+branchfree $(MAKE) -j2 ieee-check bench-smoke install-check embedded branchfree
@@ -205,7 +230,13 @@ check: check-deps
 	$(TIMED) proof-check $(MAKE) proof-check
 	$(TIMED) smoke-teeth $(MAKE) smoke-teeth
 	$(TIMED) evidence-check $(MAKE) evidence-check
-	@echo "check: 14 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, branchfree, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check), 0 failed"
+	$(TIMED) clean-tree $(MAKE) clean-tree-check
+	@echo "check: 15 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, branchfree, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check, clean-tree), 0 failed"
+
+# Is the checkout as make check found it?  (In a git work tree: git status
+# shows nothing, or only the local changes that were there before the run.)
+clean-tree-check:
+	sh scripts/clean_tree.sh check $(B)/clean-tree.before
 
 # make install into a scratch DESTDIR, then build a program against it
 # with pkg-config, static and shared.
