@@ -173,13 +173,23 @@ header-check:
 	cp $(B)/hc.c $(B)/hc.cc && $(CXX) -std=c++11 $(WARN) -Isrc -c $(B)/hc.cc -o $(B)/hc.o
 
 # ---- proofs --------------------------------------------------------------
+# Both write build/proof (logs, report.md); no tracked file changes.
+# proof-report refreshes the committed proofs/report.md from the last run,
+# only if that run proved the checkout's current sources (proofs/inputs.sh).
+.PHONY: proof-report
 proof: check-deps-proof
 	sh proofs/run.sh
 
 proof-check: check-deps-proof
 	sh proofs/run.sh --check
 
-# The evidence pack (evidence/: claims, proof, tests, coverage, coding
+proof-report:
+	@test -f $(B)/proof/report.md || { echo "proof-report: no $(B)/proof/report.md: run make proof first"; exit 1; }
+	@sh proofs/inputs.sh --check || { echo "proof-report: $(B)/proof is not a run on these sources (proofs/inputs.sh): run make proof first"; exit 1; }
+	cp $(B)/proof/report.md proofs/report.md
+	@tail -n 2 proofs/report.md
+
+# The evidence pack ($(B)/evidence/: claims, proof, tests, coverage, coding
 # standard, tools, hashes; scripts/evidence.py), and its reproducibility:
 # evidence-check makes the pack twice and compares them.
 .PHONY: evidence evidence-check
@@ -190,15 +200,15 @@ PROOF_CURRENT = @sh proofs/inputs.sh --check || { echo "evidence: no proof run o
 evidence: all
 	@sh scripts/deps.sh evidence
 	$(PROOF_CURRENT)
-	python3 scripts/evidence.py evidence
+	python3 scripts/evidence.py $(B)/evidence
 evidence-check: all $(TESTS:%=$(B)/test_%)
 	@sh scripts/deps.sh evidence
 	$(PROOF_CURRENT)
-	python3 scripts/evidence.py evidence > $(B)/evidence-1.log 2>&1 & p=$$!; \
+	python3 scripts/evidence.py $(B)/evidence > $(B)/evidence-1.log 2>&1 & p=$$!; \
 	python3 scripts/evidence.py $(B)/evidence-2 > $(B)/evidence-2.log 2>&1; s2=$$?; \
 	wait $$p; s1=$$?; cat $(B)/evidence-1.log; tail -3 $(B)/evidence-2.log; \
 	[ $$s1 = 0 ] && [ $$s2 = 0 ]
-	python3 scripts/evidence.py --compare evidence $(B)/evidence-2
+	python3 scripts/evidence.py --compare $(B)/evidence $(B)/evidence-2
 
 # Do the smoke tests catch inconsistent contracts at their step budget?
 .PHONY: smoke-teeth
@@ -238,23 +248,52 @@ check: check-deps
 clean-tree-check:
 	sh scripts/clean_tree.sh check $(B)/clean-tree.before
 
-# make install into a scratch DESTDIR, then build a program against it
-# with pkg-config, static and shared.
-install-check: all
-	rm -rf $(B)/stage
+# make install into a scratch DESTDIR (PREFIX=/opt/certbox staged in
+# build/stage), then build programs against it and run them:
+#   pkg-config  examples/cmake-consumer/main.c (both families) with $(CC), and
+#               the C++ example examples/cpp/example.cpp with $(CXX)
+#               -std=c++11 and the warnings as errors
+#   CMake       examples/cmake-consumer: find_package(certbox 0.1) from the
+#               staged prefix (the package config is relocatable), main.c
+#               against certbox::certbox and certbox::certbox_static, the
+#               C++ example against certbox::certbox; then a version the
+#               install does not satisfy (0.2) must be refused
+STAGE := $(CURDIR)/$(B)/stage/opt/certbox
+STAGE_PC = PKG_CONFIG_SYSROOT_DIR=$(CURDIR)/$(B)/stage PKG_CONFIG_LIBDIR=$(STAGE)/lib/pkgconfig
+install-check: all check-deps-test
+	rm -rf $(B)/stage $(B)/cmake-consumer
 	$(MAKE) install DESTDIR=$(CURDIR)/$(B)/stage PREFIX=/opt/certbox
-	printf '#include <certbox.h>\n#include <stdio.h>\nint main(void){cbx_affine a={{{1,0,0,1},{0,1,0,2},{0,0,1,3}}};cbx_box b={{0,0,0},{1,1,1}},o;cbx_affinef af={{{1,0,0,1},{0,1,0,2},{0,0,1,3}}};cbx_boxf bf={{0,0,0},{1,1,1}},of;int s=cbx_transform_box(&a,&b,&o),t=cbx_transform_boxf(&af,&bf,&of);unsigned c=cbx_ieee_check();printf("%%s %%g %%g; %%s %%g %%g; ieee %%u\\n",cbx_status_name(s),o.lo[0],o.hi[0],cbx_status_name(t),(double)of.lo[0],(double)of.hi[0],c);return s||t||c;}\n' > $(B)/ic.c
-	PKG_CONFIG_SYSROOT_DIR=$(CURDIR)/$(B)/stage PKG_CONFIG_LIBDIR=$(CURDIR)/$(B)/stage/opt/certbox/lib/pkgconfig \
-	  sh -c '$(CC) -std=c99 $(WARN) $(B)/ic.c $$(pkg-config --cflags --libs certbox) -o $(B)/ic && LD_LIBRARY_PATH=$(CURDIR)/$(B)/stage/opt/certbox/lib ./$(B)/ic'
 	test -L $(B)/stage/opt/certbox/lib/libcertbox.so.$(SOVERSION)
+	$(STAGE_PC) sh -c '$(CC) -std=c99 $(WARN) examples/cmake-consumer/main.c $$(pkg-config --cflags --libs certbox) -o $(B)/ic'
+	LD_LIBRARY_PATH=$(STAGE)/lib ./$(B)/ic
+	$(STAGE_PC) sh -c '$(CXX) -std=c++11 $(WARN) examples/cpp/example.cpp $$(pkg-config --cflags --libs certbox) -o $(B)/icpp'
+	LD_LIBRARY_PATH=$(STAGE)/lib ./$(B)/icpp
+	CC='$(CC)' CXX='$(CXX)' cmake -S examples/cmake-consumer -B $(B)/cmake-consumer \
+	  -DCMAKE_PREFIX_PATH=$(STAGE) > $(B)/cmake-consumer.log 2>&1 || { cat $(B)/cmake-consumer.log; exit 1; }
+	grep -qx 'certbox_DIR:PATH=$(STAGE)/lib/cmake/certbox' $(B)/cmake-consumer/CMakeCache.txt
+	MAKEFLAGS= cmake --build $(B)/cmake-consumer > $(B)/cmake-consumer-build.log 2>&1 || { cat $(B)/cmake-consumer-build.log; exit 1; }
+	./$(B)/cmake-consumer/consumer && ./$(B)/cmake-consumer/consumer_static && ./$(B)/cmake-consumer/consumer_cpp
+	readelf -d $(B)/cmake-consumer/consumer | grep -q 'NEEDED.*\[libcertbox\.so\.$(SOVERSION)\]'
+	! readelf -d $(B)/cmake-consumer/consumer_static | grep -q 'NEEDED.*libcertbox'
+	! cmake -S examples/cmake-consumer -B $(B)/cmake-consumer -DCERTBOX_WANT=0.2 > $(B)/cmake-consumer-0.2.log 2>&1
+	grep -q 'version: 0.1.0' $(B)/cmake-consumer-0.2.log
+	@echo "install-check: pkg-config (C, C++11) and CMake (shared, static, C++11) consumers of the staged install built and ran; find_package(certbox 0.2) refused"
 
 # ---- install -------------------------------------------------------------
 # certbox.h and what it includes (both families' API, the precision tables,
 # and the ACSL logic that Frama-C users of the contracts need).
 PUBHDR := src/certbox.h src/cbx_api.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h \
           specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+# The CMake package (cmake/*.cmake.in): its paths relative to its own place
+# (realpath -s: by name, not through this machine's symlinks), so that the
+# install can be staged or moved; absolute if they have no relative form.
+CMAKE_SUBST = lib=$$(realpath -m -s --relative-to='$(CMAKEDIR)' '$(LIBDIR)' 2>/dev/null) || lib='$(LIBDIR)'; \
+	inc=$$(realpath -m -s --relative-to='$(LIBDIR)' '$(INCDIR)' 2>/dev/null) || inc='$(INCDIR)'; \
+	ptr=$$($(CC) -dM -E -x c /dev/null | sed -n 's/^\#define __SIZEOF_POINTER__ //p'); \
+	subst() { sed -e "s\#@LIBDIR_FROM_CMAKEDIR@\#$$lib\#g" -e "s\#@INCDIR_FROM_LIBDIR@\#$$inc\#g" \
+	  -e "s\#@SIZEOF_VOID_P@\#$$ptr\#g" -e 's\#@VERSION@\#$(VERSION)\#g' -e 's\#@SOVERSION@\#$(SOVERSION)\#g' "$$@"; }
 install: all
-	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCDIR) $(DESTDIR)$(PCDIR)
+	install -d $(DESTDIR)$(LIBDIR) $(DESTDIR)$(INCDIR) $(DESTDIR)$(PCDIR) $(DESTDIR)$(CMAKEDIR)
 	install -m 644 $(B)/libcertbox.a $(DESTDIR)$(LIBDIR)/
 	install -m 755 $(B)/libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/
 	ln -sf libcertbox.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
@@ -262,10 +301,15 @@ install: all
 	install -m 644 $(PUBHDR) $(DESTDIR)$(INCDIR)/
 	sed -e 's#@PREFIX@#$(PREFIX)#' -e 's#@LIBDIR@#$(LIBDIR)#' -e 's#@INCDIR@#$(INCDIR)#' \
 	    -e 's#@VERSION@#$(VERSION)#' certbox.pc.in > $(DESTDIR)$(PCDIR)/certbox.pc
+	$(CMAKE_SUBST); \
+	subst cmake/certboxConfig.cmake.in > $(DESTDIR)$(CMAKEDIR)/certboxConfig.cmake && \
+	subst cmake/certboxConfigVersion.cmake.in > $(DESTDIR)$(CMAKEDIR)/certboxConfigVersion.cmake
 
 uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
-	      $(addprefix $(DESTDIR)$(INCDIR)/,$(notdir $(PUBHDR))) $(DESTDIR)$(PCDIR)/certbox.pc
+	      $(addprefix $(DESTDIR)$(INCDIR)/,$(notdir $(PUBHDR))) $(DESTDIR)$(PCDIR)/certbox.pc \
+	      $(DESTDIR)$(CMAKEDIR)/certboxConfig.cmake $(DESTDIR)$(CMAKEDIR)/certboxConfigVersion.cmake
+	-rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null
 
 # libFuzzer harnesses with the exact GMP oracle (tests/fuzz/); needs clang.
 fuzz: check-deps-test

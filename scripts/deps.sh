@@ -2,7 +2,8 @@
 # Install what certbox needs from Debian's packages, when it is absent.
 # Usage: scripts/deps.sh [build|test|proof|fuzz|bench|embedded|cross|evidence|all]
 #   build     gcc, make
-#   test      + GMP, MPFR, g++, pkg-config, python3
+#   test      + GMP, MPFR, g++, pkg-config, python3, cmake (install-check's
+#               CMake consumer)
 #   proof     + frama-c-base, why3, cvc4, z3
 #   fuzz      + clang and its libFuzzer/sanitizer runtimes
 #   bench     + gnuplot-nox (make bench draws its plot)
@@ -29,6 +30,7 @@ if [ "$what" != build ]; then
   have g++ || need="$need g++"
   have pkg-config || need="$need pkg-config"
   have python3 || need="$need python3"
+  have cmake || need="$need cmake"
 fi
 if is fuzz; then
   # libFuzzer and the sanitizer runtimes of clang (only recommended by clang)
