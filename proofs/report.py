@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Summarise the Frama-C/WP logs of proofs/run.sh as proofs/report.md.
+"""Summarise the Frama-C/WP logs of proofs/run.sh as build/proof/report.md
+(printed on stdout; make proof-report copies it to proofs/report.md).
 
 Usage: report.py OUTDIR WALL_SECONDS
 OUTDIR holds wp-JOB.log and wp-JOB.time for every job of proofs/job.sh.

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Run the Frama-C/WP proofs of certbox (both families) and write
-# proofs/report.md.
+# build/proof/report.md (make proof-report copies it to the committed
+# proofs/report.md: a proof run never changes a tracked file).
 #   sh proofs/run.sh          prove, write the report
 #   sh proofs/run.sh --check  same, and exit 1 unless every goal is proved
 #                             and the smoke tests find no inconsistent contract
@@ -19,7 +20,7 @@ cd "$root"
 check=0; [ "${1:-}" = --check ] && check=1
 out=build/proof
 mkdir -p $out
-rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256
+rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256 $out/report.md
 # the inputs as they are when the run starts (make evidence checks them)
 inputs=$(sh proofs/inputs.sh)
 conf=$(sh proofs/setup.sh $out)
@@ -34,10 +35,10 @@ start=$(date +%s)
 # a failed job shows in the report (RESULT: NOT PROVED), not here
 echo $LIST | tr ' ' '\n' | xargs -P "$JOBS" -n 1 sh proofs/job.sh || true
 end=$(date +%s)
-python3 proofs/report.py $out $((end - start)) > proofs/report.md.new
+python3 proofs/report.py $out $((end - start)) > $out/report.md.new
 echo "$inputs" > $out/inputs.sha256
-mv proofs/report.md.new proofs/report.md
-tail -n 4 proofs/report.md
+mv $out/report.md.new $out/report.md
+tail -n 4 $out/report.md
 if [ $check = 1 ]; then
-  grep -q '^RESULT: PROVED' proofs/report.md || { echo "proof: FAILED (see proofs/report.md, $out/wp-*.log)"; exit 1; }
+  grep -q '^RESULT: PROVED' $out/report.md || { echo "proof: FAILED (see $out/report.md, $out/wp-*.log)"; exit 1; }
 fi

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""make evidence: the evidence pack an assessor asks for, in evidence/.
+"""make evidence: the evidence pack an assessor asks for, in build/evidence/
+(under build/: making the pack changes no tracked file).
 
-  evidence/index.md       the pack for a reader (claims, proof, tests,
-                          coverage, coding standard, tools, hashes)
-  evidence/evidence.json  the same, machine-readable
-  evidence/raw/           what it was made from: proof report and logs, test
-                          outputs, gcovr's JSON, cppcheck and clang-tidy output
+  build/evidence/index.md       the pack for a reader (claims, proof, tests,
+                                coverage, coding standard, tools, hashes)
+  build/evidence/evidence.json  the same, machine-readable
+  build/evidence/raw/           what it was made from: proof report and logs,
+                                test outputs, gcovr's JSON, cppcheck and
+                                clang-tidy output
 
 Sections:
   claims    every public function's contract: each clause's formal text (the
@@ -13,9 +15,10 @@ Sections:
             fails on a clause without plain words or a stale entry
   proof     goals per function and family (proved / total, provers), the
             trusted base (proofs/README.md), the smoke tests; from the logs
-            of the last proof run (build/proof, make proof-check), which
-            must have proved these very sources (proofs/inputs.sh; make
-            evidence runs the proofs first when it did not)
+            of the last proof run (build/proof: its logs and report.md;
+            make proof-check), which must have proved these very sources
+            (proofs/inputs.sh; make evidence runs the proofs first when it
+            did not)
   tests     every exact suite run (the sizes of make test), its cases,
             failures, containment checks and failures, tightness figures
   coverage  statement and branch coverage of src/ by those suites (gcovr),
@@ -31,7 +34,7 @@ Reproducible: the content depends only on the revision and the tools; what
 varies between runs (time stamps, durations, which racing prover answered
 first) is kept under the JSON key "volatile" and in the last section of
 index.md, which `evidence.py --compare A B` leaves out.
-Usage: scripts/evidence.py [OUTDIR]  |  scripts/evidence.py --compare DIR1 DIR2
+Usage: scripts/evidence.py [OUTDIR (build/evidence)]  |  scripts/evidence.py --compare DIR1 DIR2
 """
 import datetime
 import glob
@@ -174,7 +177,13 @@ def proof(raw):
     os.makedirs(os.path.join(raw, 'proof'), exist_ok=True)
     for f in glob.glob(os.path.join(d, 'wp-*.log')):
         shutil.copy(f, os.path.join(raw, 'proof'))
-    shutil.copy(os.path.join(ROOT, 'proofs', 'report.md'), os.path.join(raw, 'proof', 'report.md'))
+    # the report of that very run (proofs/run.sh writes it beside the logs;
+    # the committed proofs/report.md may be older: make proof-report)
+    rep = os.path.join(d, 'report.md')
+    if os.path.exists(rep):
+        shutil.copy(rep, os.path.join(raw, 'proof', 'report.md'))
+    else:
+        failures.append('proof: no build/proof/report.md beside the logs (run make proof)')
     if not data['ok']:
         failures.append('proof: not every goal proved, or a smoke test failed, or a job did not finish')
     stable = {'families': {}, 'total': data['total'], 'proved': data['proved'],
@@ -564,7 +573,7 @@ def compare(a, b):
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == '--compare':
         return compare(sys.argv[2], sys.argv[3])
-    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'evidence')
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'build', 'evidence')
     raw = os.path.join(out, 'raw')
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(raw)
