@@ -1,4 +1,5 @@
-# certbox: proven, tight axis-aligned bounding boxes.  Everything goes to build/.
+# certbox: proven, tight axis-aligned bounding boxes.  What a target makes
+# goes to build/; only make install and make proof-report write elsewhere.
 #   make          the static and shared libraries (build/libcertbox.a,
 #                 build/libcertbox.so*), build/certbox.pc and the scene tool
 #                 build/certbox: a C compiler is all it needs (no GMP/MPFR)
@@ -14,6 +15,7 @@
 #                 certbox::certbox and certbox::certbox_static)
 #   make proof    re-run the Frama-C/WP proofs; report in build/proof/report.md
 #   make proof-report  copy that report to the committed proofs/report.md
+#   make evidence the evidence pack for an assessor, in build/evidence/
 #   make mutants  mutation check: deliberate faults must all be caught
 #   make fuzz     libFuzzer harnesses with the exact oracle (60 s each)
 
@@ -309,7 +311,7 @@ uninstall:
 	rm -f $(DESTDIR)$(LIBDIR)/libcertbox.a $(DESTDIR)$(LIBDIR)/libcertbox.so* \
 	      $(addprefix $(DESTDIR)$(INCDIR)/,$(notdir $(PUBHDR))) $(DESTDIR)$(PCDIR)/certbox.pc \
 	      $(DESTDIR)$(CMAKEDIR)/certboxConfig.cmake $(DESTDIR)$(CMAKEDIR)/certboxConfigVersion.cmake
-	-rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null
+	rmdir $(DESTDIR)$(CMAKEDIR) 2>/dev/null || true
 
 # libFuzzer harnesses with the exact GMP oracle (tests/fuzz/); needs clang.
 fuzz: check-deps-test
