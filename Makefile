@@ -90,8 +90,28 @@ $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 SCENESRC   := src/scene/scene.c
 TOOL_CFLAGS :=
 TOOL_LIBS   :=
-$(B)/certbox: src/scene/main.c $(SCENESRC) src/scene/scene.h $(B)/libcertbox.a
-	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) src/scene/main.c $(SCENESRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
+# glTF input (issue 18: src/scene/gltf.c, docs/gltf.md) parses JSON with
+# jansson, the tool's optional dependency: found by pkg-config, the tool
+# reads glTF (-DCBX_GLTF); not found, it is built without (a note here, and
+# a clear error for a glTF file).  test_gltf needs it (deps.sh test).
+GLTFSRC      := src/scene/gltf.c
+GLTFDIR      := /usr/share/assimp/models/glTF2
+HAVE_JANSSON := $(shell pkg-config --exists jansson 2>/dev/null && echo 1)
+ifeq ($(HAVE_JANSSON),1)
+TOOL_CFLAGS  += -DCBX_GLTF $(shell pkg-config --cflags jansson)
+TOOL_LIBS    += $(shell pkg-config --libs jansson)
+endif
+NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjansson-dev): run sh scripts/deps.sh test as root, or apt-get install libjansson-dev" >&2; exit 1; }
+$(B)/certbox: src/scene/main.c $(SCENESRC) $(GLTFSRC) src/scene/scene.h src/scene/gltf.h $(B)/libcertbox.a
+	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
+	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) src/scene/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
+$(B)/test_gltf: tests/test_gltf.c $(GLTFSRC) src/scene/gltf.h $(B)/libcertbox.a
+	$(NEED_JANSSON)
+	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Isrc/scene $< $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
+$(B)/san/test_gltf: tests/test_gltf.c $(GLTFSRC) src/scene/gltf.h $(LIBSRC) $(HEADERS)
+	$(NEED_JANSSON)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Isrc/scene -Itests $< $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests -Isrc/scene $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
@@ -109,7 +129,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee gltf
 test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -127,9 +147,10 @@ test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_scene examples/*.scene
 	for f in examples/*.scene; do ./$(B)/certbox $$f > /dev/null || exit 1; done
 	! ./$(B)/certbox examples/scene-format.md > /dev/null 2>&1
+	./$(B)/test_gltf $(GLTFDIR) tests/data/gltf $(B)/certbox
 
 # Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
-test-san: $(TESTS:%=$(B)/san/test_%)
+test-san: $(TESTS:%=$(B)/san/test_%) $(B)/certbox
 	./$(B)/san/test_badinput
 	./$(B)/san/test_exact 200000 2
 	./$(B)/san/test_cbox 100000 2
@@ -144,6 +165,7 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_float 50000 2
 	./$(B)/san/test_ieee
 	./$(B)/san/test_scene examples/*.scene
+	./$(B)/san/test_gltf $(GLTFDIR) tests/data/gltf $(B)/certbox
 
 # Cortex-M4F and Cortex-M7, freestanding (arm-none-eabi-gcc): no libc beyond
 # sqrt, code size and worst-case stack per function (build/embedded/report.md).

@@ -3,7 +3,8 @@
 # Usage: scripts/deps.sh [build|test|proof|fuzz|bench|embedded|cross|evidence|all]
 #   build     gcc, make
 #   test      + GMP, MPFR, g++, pkg-config, python3, cmake (install-check's
-#               CMake consumer)
+#               CMake consumer), jansson (the tool's glTF input) and
+#               assimp-testmodels (glTF files for test_gltf)
 #   proof     + frama-c-base, why3, cvc4, z3
 #   fuzz      + clang and its libFuzzer/sanitizer runtimes
 #   bench     + gnuplot-nox (make bench draws its plot)
@@ -31,6 +32,8 @@ if [ "$what" != build ]; then
   have pkg-config || need="$need pkg-config"
   have python3 || need="$need python3"
   have cmake || need="$need cmake"
+  hdr jansson.h || need="$need libjansson-dev"
+  [ -d /usr/share/assimp/models/glTF2 ] || need="$need assimp-testmodels"
 fi
 if is fuzz; then
   # libFuzzer and the sanitizer runtimes of clang (only recommended by clang)

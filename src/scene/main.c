@@ -2,6 +2,7 @@
  * certbox: world-space bounds of every leaf of a scene file, and of the
  * whole scene (format: examples/scene-format.md).
  *   certbox [--json] [--hex] FILE
+ *   certbox [--json] [--hex] [--from-vertices] FILE.gltf|FILE.glb  (gltf.c)
  * Exit status: 0 every bound proven (CBX_OK); 1 some leaf's status is not
  * CBX_OK (printed as such, with a note on stderr); 2 bad usage or a bad
  * file (FILE:LINE: message on stderr, nothing on stdout).
@@ -9,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "scene.h"
+#include "gltf.h"
 
 static void num(char *buf, size_t n, double x, int hex)
 {
@@ -31,6 +33,9 @@ static void print_box(const cbx_box *b, int hex, int json)
 
 int main(int argc, char **argv)
 {
+    int g = gltf_main(argc, argv);     /* glTF content: its own reader */
+    if (g >= 0)
+        return g;
     int json = 0, hex = 0;
     const char *path = NULL;
     for (int k = 1; k < argc; k++) {
@@ -40,7 +45,7 @@ int main(int argc, char **argv)
         else { path = NULL; break; }
     }
     if (!path) {
-        fprintf(stderr, "usage: certbox [--json] [--hex] FILE\n");
+        fprintf(stderr, "usage: certbox [--json] [--hex] [--from-vertices] FILE\n");
         return 2;
     }
     scene s;

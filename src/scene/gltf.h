@@ -1,0 +1,98 @@
+/*
+ * glTF 2.0 input for the certbox tool (.gltf JSON with .bin buffers or
+ * data: URIs, or one binary .glb): a sound world box for every mesh
+ * instance (node path, mesh, primitive) and for every scene.  Limits and
+ * promise: docs/gltf.md.  JSON is parsed by jansson; only the tool links
+ * it (the library stays dependency-free).  Used by main.c and by
+ * tests/test_gltf.c.
+ */
+#ifndef CBX_GLTF_H
+#define CBX_GLTF_H
+
+#include <stddef.h>
+#include <stdio.h>
+#include "certbox.h"
+
+/* An interval 3x4 affine map: y_i = sum_j M_ij x_j + M_i3 for some real
+ * M_ij in [lo[i][j], hi[i][j]] (ends may be infinite, never NaN). */
+typedef struct gl_imat { double lo[3][4], hi[3][4]; } gl_imat;
+
+/* A node as written: its local map (a degenerate interval for `matrix`,
+ * outward-rounded T*R*S for TRS), the numbers it came from, its parent. */
+typedef struct gl_node {
+    int parent, mesh, has_matrix;
+    double matrix[16];          /* column-major, as in the file */
+    double t[3], r[4], s[3];    /* TRS as in the file (r = x, y, z, w) */
+    gl_imat local;
+    gl_imat world;              /* memoised: parent world * local */
+    int world_done;
+} gl_node;
+
+/* A POSITION accessor (or an index accessor) after checking. */
+typedef struct gl_acc {
+    int used;                   /* 1 once checked as a POSITION accessor */
+    int ctype, normalized;      /* componentType, normalized flag */
+    long count;
+    int has_minmax;
+    double min[3], max[3];
+    int no_data;                /* Draco: the vertices are not readable */
+    /* vertex data: element k at base + k * stride (NULL: all zero) */
+    const unsigned char *base;
+    size_t stride;
+    long *spmap;                /* sparse: value index per vertex, or -1 */
+    const unsigned char *sp_val;
+    cbx_box vbox;               /* hull of the vertices (outward) */
+    int vnan, vinf;             /* some vertex is NaN / infinite */
+    long outside, first_out;    /* vertices outside min/max; the first */
+} gl_acc;
+
+/* One mesh instance: a primitive of the mesh of a node, in one scene. */
+typedef struct gl_leaf {
+    int scene, node, mesh, prim, acc;
+    char path[256];             /* node indices root to leaf, "0/3/7" */
+    cbx_box local;              /* the box that is transformed */
+    cbx_box world;
+    cbx_status st;
+} gl_leaf;
+
+typedef struct gl_scene { cbx_box world; cbx_status st; int first, n; } gl_scene;
+
+typedef struct gl_doc {
+    void *json;                 /* json_t * (the parsed document) */
+    unsigned char *file; size_t nfile;
+    unsigned char **bufs; size_t *nbufs; int nbuf;
+    gl_node *nodes; int nn;
+    gl_acc *accs; int na;
+    gl_leaf *leaves; int nl, capl;
+    gl_scene *scenes; int ns;
+    int notes;                  /* flagged problems (printed on stderr) */
+} gl_doc;
+
+/* 1 if the file's content looks like glTF (GLB magic, or JSON: `{` after
+ * blanks), 0 otherwise (or unreadable). */
+int gltf_sniff(const char *path);
+
+/* Load, check and bound a glTF file.  from_vertices: bound each accessor
+ * by its vertices instead of its min/max.  0 on success (notes on the
+ * file's own claims, if any, are printed on `notes`, which may be NULL);
+ * -1 and err "FILE:LINE:COLUMN: msg", "FILE: byte N: msg" or
+ * "FILE: /json/pointer: msg" on a bad file (nothing kept). */
+int gltf_load(gl_doc *d, const char *path, int from_vertices, FILE *notes,
+              char *err, size_t errlen);
+void gltf_free(gl_doc *d);
+
+/* Vertex k of accessor a, exactly: component j is num[j] / den (den = 1
+ * for float32; 127, 255, 32767 or 65535 for normalized integers, where
+ * num is already clamped to -den as the spec says). */
+void gltf_vertex(const gl_doc *d, int a, long k, double num[3], double *den);
+
+/* The box transform: out contains { M x : M in W, x in b } (exact reals).
+ * Returns CBX_OK, or CBX_ERANGE when some end is infinite. */
+cbx_status gltf_imat_box(const gl_imat *W, const cbx_box *b, cbx_box *out);
+
+/* The tool: certbox [--json] [--hex] [--from-vertices] FILE.gltf|FILE.glb.
+ * Returns the exit status, or -1 if FILE is not glTF (or no FILE given):
+ * then the caller goes on with its own formats. */
+int gltf_main(int argc, char **argv);
+
+#endif /* CBX_GLTF_H */
