@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""Writes the hand-made glTF files of tests/data/gltf/ (run from that folder;
+the files are committed, this script documents how they were made).
+Good files exercise TRS with an unnormalised quaternion, interleaved
+buffers, sparse accessors, quantized positions and overflow; bad files
+each carry one defect (tests/data/gltf/expect.txt names its error)."""
+import base64, json, struct
+
+def b64(data):
+    return "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+
+def f32(*v):
+    return struct.pack("<%df" % len(v), *v)
+
+CUBE = [(x, y, z) for x in (-1.0, 1.0) for y in (-2.0, 0.5) for z in (-0.25, 3.0)]
+
+def doc(nodes, scenes=None, accessors=None, views=None, buffers=None, meshes=None, **extra):
+    cube = b"".join(f32(*p) for p in CUBE)
+    d = {"asset": {"version": "2.0"}, "scene": 0,
+         "scenes": scenes if scenes is not None else [{"nodes": [0]}],
+         "nodes": nodes,
+         "meshes": meshes if meshes is not None else [{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0}]}],
+         "accessors": accessors if accessors is not None else
+             [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+               "min": [-1, -2, -0.25], "max": [1, 0.5, 3]}],
+         "bufferViews": views if views is not None else [{"buffer": 0, "byteLength": 96}],
+         "buffers": buffers if buffers is not None else [{"byteLength": 96, "uri": b64(cube)}]}
+    d.update(extra)
+    return d
+
+def write(name, d):
+    with open(name, "w") as f:
+        json.dump(d, f, indent=1)
+        f.write("\n")
+
+# ---- good files ---------------------------------------------------------
+write("trs.gltf", doc([
+    {"children": [1], "translation": [10, -3.5, 0.1], "rotation": [1, 2, 3, 4], "scale": [0.3, 7, -1.1]},
+    {"children": [2], "rotation": [0.1, -0.2, 0.3, 0.9], "translation": [1e-3, 2, 3]},
+    {"mesh": 0, "scale": [1e-8, 3, 1], "rotation": [1e-200, 0, 3e-200, 1e-200]}]))
+write("matrix.gltf", doc([
+    {"children": [1], "matrix": [0.1, 0.2, 0.3, 0, -1, 1e-5, 7, 0, 2, 2, 2, 0, 1e5, -1e5, 0.3, 1]},
+    {"mesh": 0, "matrix": [1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1]}]))
+# interleaved: position (12 bytes) + 8 bytes of something else, stride 20
+inter = b"".join(f32(*p) + b"\xff" * 8 for p in CUBE)
+write("interleaved.gltf", doc([{"mesh": 0, "rotation": [0, 0.7071067811865476, 0, 0.7071067811865476]}],
+    views=[{"buffer": 0, "byteOffset": 4, "byteLength": 156, "byteStride": 20}],
+    buffers=[{"byteLength": 160, "uri": b64(b"\0" * 4 + inter)}]))
+# sparse: no bufferView (zeros), 2 vertices replaced
+sp = struct.pack("<HH", 1, 6) + f32(5, -6, 7, -8, 9, 0.125)
+write("sparse.gltf", doc([{"mesh": 0, "translation": [1, 2, 3]}],
+    accessors=[{"componentType": 5126, "count": 8, "type": "VEC3", "min": [-8, -6, 0], "max": [5, 9, 7],
+                "sparse": {"count": 2, "indices": {"bufferView": 0, "componentType": 5123},
+                           "values": {"bufferView": 1}}}],
+    views=[{"buffer": 0, "byteLength": 4}, {"buffer": 0, "byteOffset": 4, "byteLength": 24}],
+    buffers=[{"byteLength": 28, "uri": b64(sp)}]))
+# KHR_mesh_quantization: normalized shorts (-32768 clamps to -1), stride 8
+q = b"".join(struct.pack("<hhhh", *v, 0) for v in [(-32768, 0, 32767), (100, -200, 300), (1, 2, 3)])
+write("quantized.gltf", doc([{"mesh": 0, "scale": [3, 3, 3], "rotation": [0, 0, 1, 1]}],
+    accessors=[{"bufferView": 0, "componentType": 5122, "normalized": True, "count": 3, "type": "VEC3",
+                "min": [-1, -0.0062, 0.00009], "max": [0.0031, 0.00007, 1]}],
+    views=[{"buffer": 0, "byteLength": 24, "byteStride": 8}],
+    buffers=[{"byteLength": 24, "uri": b64(q)}],
+    extensionsUsed=["KHR_mesh_quantization"], extensionsRequired=["KHR_mesh_quantization"]))
+write("overflow.gltf", doc([{"children": [1], "scale": [1e300, 1, 1]}, {"mesh": 0, "scale": [1e10, 1, 1]}]))
+write("two_scenes.gltf", doc([{"mesh": 0}, {"mesh": 0, "translation": [5, 0, 0]}],
+    scenes=[{"nodes": [0]}, {"nodes": [1, 0]}]))
+# a GLB of trs.gltf's content
+def glb(jsn, bin_=None, version=2, length=None, jlen=None):
+    j = json.dumps(jsn).encode()
+    j += b" " * (-len(j) % 4)
+    body = struct.pack("<II", len(j) if jlen is None else jlen, 0x4E4F534A) + j
+    if bin_ is not None:
+        bin_ += b"\0" * (-len(bin_) % 4)
+        body += struct.pack("<II", len(bin_), 0x004E4942) + bin_
+    total = 12 + len(body)
+    return struct.pack("<4sII", b"glTF", version, total if length is None else length) + body
+cube = b"".join(f32(*p) for p in CUBE)
+gdoc = doc([{"mesh": 0, "rotation": [0.5, 0.5, 0.5, 0.5], "translation": [1, 1, 1]}], buffers=[{"byteLength": 96}])
+open("cube.glb", "wb").write(glb(gdoc, cube))
+
+# ---- bad files: one defect each ---------------------------------------------
+write("cycle.gltf", doc([{"mesh": 0}, {"children": [2]}, {"children": [1]}]))
+write("two_parents.gltf", doc([{"children": [2]}, {"children": [2]}, {"mesh": 0}], scenes=[{"nodes": [0, 1]}]))
+write("self_child.gltf", doc([{"children": [0], "mesh": 0}]))
+write("not_root.gltf", doc([{"children": [1]}, {"mesh": 0}], scenes=[{"nodes": [1]}]))
+acc = lambda **k: [dict({"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                         "min": [-1, -2, -0.25], "max": [1, 0.5, 3]}, **k)]
+a = acc(); del a[0]["min"]
+write("no_minmax.gltf", doc([{"mesh": 0}], accessors=a))
+write("min_gt_max.gltf", doc([{"mesh": 0}], accessors=acc(min=[2, -2, -0.25])))
+write("acc_oob.gltf", doc([{"mesh": 0}], meshes=[{"primitives": [{"attributes": {"POSITION": 5}}]}]))
+write("bv_oob.gltf", doc([{"mesh": 0}], accessors=acc(bufferView=3)))
+write("buf_oob.gltf", doc([{"mesh": 0}], views=[{"buffer": 2, "byteLength": 96}]))
+write("mesh_oob.gltf", doc([{"mesh": 1}]))
+write("node_oob.gltf", doc([{"children": [4], "mesh": 0}]))
+write("acc_long.gltf", doc([{"mesh": 0}], accessors=acc(count=9)))
+write("view_long.gltf", doc([{"mesh": 0}], views=[{"buffer": 0, "byteLength": 96, "byteOffset": 4}]))
+write("missing_bin.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "nothere.bin"}]))
+open("short.bin", "wb").write(cube[:40])
+write("short_bin.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "short.bin"}]))
+write("ctype.gltf", doc([{"mesh": 0}], accessors=acc(componentType=5125)))
+write("vec2.gltf", doc([{"mesh": 0}], accessors=acc(type="VEC2")))
+write("uri_abs.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "/etc/passwd"}]))
+write("uri_dotdot.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "sub/../../gltf/short.bin"}]))
+write("uri_pct_dotdot.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "%2e%2E/gltf/short.bin"}]))
+write("uri_pct_abs.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "%2Fetc%2Fpasswd"}]))
+write("uri_scheme.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "file:///etc/passwd"}]))
+write("uri_pct_bad.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "a%zz.bin"}]))
+write("base64_bad.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": b64(cube)[:-8] + "*AAAAAAA"}]))
+write("base64_len.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": b64(cube)[:-1]}]))
+write("matrix_proj.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0.5, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}]))
+write("matrix_trs.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "scale": [1, 1, 1]}]))
+write("quat_zero.gltf", doc([{"mesh": 0, "rotation": [0, 0, 0, 0]}]))
+write("ext_required.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_meshopt_compression"]))
+write("no_scene.gltf", doc([{"mesh": 0}], scenes=[]))
+write("version1.gltf", dict(doc([{"mesh": 0}]), asset={"version": "1.0"}))
+# claims: vertices outside min/max (flagged), NaN / infinite positions (flagged)
+write("claims.gltf", doc([{"mesh": 0}], accessors=acc(max=[1, 0.25, 3])))
+bad = b"".join(f32(*p) for p in CUBE[:6]) + f32(float("nan"), 0, 0) + f32(float("inf"), 0, 0)
+write("nan_inf.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": b64(bad)}]))
+with open("overflow_number.gltf", "w") as f:
+    f.write(json.dumps(doc([{"mesh": 0}]), indent=1).replace('"max": [\n    1,', '"max": [\n    1e400,'))
+with open("dup_key.gltf", "w") as f:
+    f.write('{\n "asset": {"version": "2.0"},\n "scene": 0,\n "scene": 0\n}\n')
+with open("syntax.gltf", "w") as f:
+    f.write('{\n "asset": {"version": "2.0"},\n "nodes": [\n  {"mesh": 0,}\n ]\n}\n')
+open("glb_version.glb", "wb").write(glb(gdoc, cube, version=1))
+open("glb_length.glb", "wb").write(glb(gdoc, cube, length=1000))
+open("glb_jchunk.glb", "wb").write(glb(gdoc, cube, jlen=100000))
+g = bytearray(glb(gdoc, cube))
+boff = 20 + struct.unpack("<I", g[12:16])[0]          # the BIN chunk header
+g[boff:boff + 4] = struct.pack("<I", 96 + 100)
+open("glb_bchunk.glb", "wb").write(bytes(g))
+open("glb_short.glb", "wb").write(b"glTF\x02\x00")
+open("glb_nobin.glb", "wb").write(glb(gdoc))

@@ -1,0 +1,535 @@
+/*
+ * The glTF reader against exact rational arithmetic (GMP), on files
+ * nobody here wrote (Debian's assimp-testmodels) and on hand-made ones.
+ *   test_gltf [ASSIMP_GLTF2_DIR [DATA_DIR [CERTBOX]]]
+ * defaults: /usr/share/assimp/models/glTF2 tests/data/gltf build/certbox
+ * For every file (every .gltf / .glb under ASSIMP_GLTF2_DIR, recursively,
+ * and those of DATA_DIR/expect.txt): refused with the expected error,
+ * flagged with the expected note, or loaded (expect.txt). For every
+ * loaded file, twice (boxes from min/max, and --from-vertices):
+ *   - every node's exact map (mpq): `matrix` as written, TRS as
+ *     T * R(q)/|q|^2 * S with the exact normalised quaternion rotation;
+ *   - every vertex of every mesh instance (float32 exactly, normalized
+ *     integers as exact fractions) mapped by the exact product of its
+ *     node chain lies inside its printed box (an infinite coordinate:
+ *     the box end it pushes is infinite); with min/max boxes, also the 8
+ *     corners of min/max (the promise itself);
+ *   - the excess of each box end over the exact bound (relative to the
+ *     axis' magnitude): the min/max image with min/max boxes, the vertex
+ *     hull with --from-vertices.
+ * Teeth: for each loaded file, one box end moved one ulp inside the exact
+ * vertex hull must be caught.  Then the tool itself on a few files (its
+ * printed numbers equal the boxes here, bit for bit; exit statuses).
+ * Exit 1 on any failure.
+ */
+#define _XOPEN_SOURCE 700
+#include <dirent.h>
+#include <gmp.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include "gltf.h"
+
+typedef struct qmap { mpq_t m[3][4]; int done; } qmap;   /* y = M x + T */
+
+static long n_fail;
+#define FAIL(...) do { n_fail++; fprintf(stderr, "FAIL " __VA_ARGS__); } while (0)
+
+static void qm_init(qmap *q)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            mpq_init(q->m[i][j]);
+    q->done = 0;
+}
+static void qm_clear(qmap *q)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            mpq_clear(q->m[i][j]);
+}
+
+/* The node's exact local map from the numbers the reader kept. */
+static void qm_local(qmap *L, const gl_node *g)
+{
+    if (g->has_matrix) {
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 4; j++)
+                mpq_set_d(L->m[i][j], g->matrix[4 * j + i]);
+        return;
+    }
+    mpq_t x, y, z, w, n, t, u, R[3][3];
+    mpq_inits(x, y, z, w, n, t, u, NULL);
+    mpq_set_d(x, g->r[0]); mpq_set_d(y, g->r[1]); mpq_set_d(z, g->r[2]); mpq_set_d(w, g->r[3]);
+    mpq_t *q[4] = {&x, &y, &z, &w};
+    mpq_set_ui(n, 0, 1);
+    for (int k = 0; k < 4; k++) { mpq_mul(t, *q[k], *q[k]); mpq_add(n, n, t); }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            mpq_init(R[i][j]);
+    /* diagonal: w^2 + a^2 - b^2 - c^2 for axis a */
+    mpq_t *ax[3] = {&x, &y, &z};
+    for (int i = 0; i < 3; i++) {
+        mpq_mul(t, w, w);
+        for (int k = 0; k < 3; k++) {
+            mpq_mul(u, *ax[k], *ax[k]);
+            if (k == i) mpq_add(t, t, u); else mpq_sub(t, t, u);
+        }
+        mpq_set(R[i][i], t);
+    }
+    /* off-diagonal: 2(ab -+ wc) */
+    static const int pa[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+    for (int k = 0; k < 3; k++) {
+        int a = pa[k][0], b = pa[k][1], c = pa[k][2];   /* (a, b) with c the third */
+        mpq_mul(t, *ax[a], *ax[b]);
+        mpq_mul(u, w, *ax[c]);
+        mpq_sub(R[a][b], t, u);
+        mpq_add(R[b][a], t, u);
+        mpq_add(R[a][b], R[a][b], R[a][b]);
+        mpq_add(R[b][a], R[b][a], R[b][a]);
+    }
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) {
+            mpq_div(t, R[i][j], n);
+            mpq_set_d(u, g->s[j]);
+            mpq_mul(L->m[i][j], t, u);
+        }
+        mpq_set_d(L->m[i][3], g->t[i]);
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            mpq_clear(R[i][j]);
+    mpq_clears(x, y, z, w, n, t, u, NULL);
+}
+
+/* r = a o b (b first) */
+static void qm_compose(qmap *r, const qmap *a, const qmap *b)
+{
+    mpq_t t;
+    mpq_init(t);
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            if (j == 3) mpq_set(r->m[i][j], a->m[i][3]); else mpq_set_ui(r->m[i][j], 0, 1);
+            for (int k = 0; k < 3; k++) {
+                mpq_mul(t, a->m[i][k], b->m[k][j]);
+                mpq_add(r->m[i][j], r->m[i][j], t);
+            }
+        }
+    mpq_clear(t);
+}
+
+/* exact world maps, memoised per node */
+static const qmap *world(const gl_doc *d, qmap *W, int k)
+{
+    if (W[k].done)
+        return &W[k];
+    qmap L;
+    qm_init(&L);
+    qm_local(&L, &d->nodes[k]);
+    if (d->nodes[k].parent < 0) {
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 4; j++)
+                mpq_set(W[k].m[i][j], L.m[i][j]);
+    } else {
+        qm_compose(&W[k], world(d, W, d->nodes[k].parent), &L);
+    }
+    qm_clear(&L);
+    W[k].done = 1;
+    return &W[k];
+}
+
+typedef struct stats {
+    long files, loaded, refused, flagged, instances, vertices, corners, inf_checks, teeth;
+    double round_mm, round_v;           /* max relative excess over the exact image of the box mapped */
+    double excess_mm, excess_v;         /* ... over the exact hull of the mapped vertices */
+} stats;
+
+/* y outside [b->lo[i], b->hi[i]] (an infinite end holds everything) */
+static int outside(const mpq_t y, const cbx_box *b, int i, mpq_t tmp)
+{
+    if (isfinite(b->lo[i])) { mpq_set_d(tmp, b->lo[i]); if (mpq_cmp(y, tmp) < 0) return 1; }
+    if (isfinite(b->hi[i])) { mpq_set_d(tmp, b->hi[i]); if (mpq_cmp(y, tmp) > 0) return 1; }
+    return 0;
+}
+
+/* relative excess of box end e over the exact bound x (sign: outward) */
+static double excess(double e, const mpq_t x, double scale, int upper)
+{
+    if (!isfinite(e)) return 0.0;
+    mpq_t d;
+    mpq_init(d);
+    mpq_set_d(d, e);
+    if (upper) mpq_sub(d, d, x); else mpq_sub(d, x, d);
+    double r = mpq_get_d(d) / (scale > 0 ? scale : 1.0);
+    mpq_clear(d);
+    return r;
+}
+
+/* Check leaf L's box `b` against the exact vertices (and min/max corners
+ * if corners).  Returns the failures; fills the exact hull and image. */
+static long check_leaf(const gl_doc *d, const gl_leaf *L, const cbx_box *b, const qmap *W, int corners,
+                       int skip_outside, stats *st, const char *file, int quiet, mpq_t hlo[3], mpq_t hhi[3], int *nh)
+{
+    const gl_acc *A = &d->accs[L->acc];
+    long fails = 0;
+    mpq_t v[3], y, t, tmp;
+    for (int j = 0; j < 3; j++) mpq_init(v[j]);
+    mpq_inits(y, t, tmp, NULL);
+    *nh = 0;
+    if (L->st == CBX_EINVAL) {            /* NaN met: the box must be the whole space */
+        for (int i = 0; i < 3; i++)
+            if (b->lo[i] != -HUGE_VAL || b->hi[i] != HUGE_VAL) {
+                fails++;
+                if (!quiet) FAIL("%s: leaf %s: CBX_EINVAL but not the whole space\n", file, L->path);
+            }
+        goto done;
+    }
+    for (long k = 0; !A->no_data && k < A->count; k++) {
+        double num[3], den;
+        gltf_vertex(d, L->acc, k, num, &den);
+        if (skip_outside && A->outside) {
+            /* flagged accessor with min/max boxes: only claim-abiding vertices */
+            int in = 1;
+            for (int j = 0; j < 3; j++)
+                in &= !isnan(num[j]) && num[j] / den >= A->min[j] && num[j] / den <= A->max[j];
+            if (!in) continue;
+        }
+        int inf = 0;
+        for (int j = 0; j < 3; j++) {
+            if (isnan(num[j])) goto next;  /* only with a CBX_EINVAL leaf (above) */
+            inf |= isinf(num[j]);
+        }
+        if (inf) {                          /* the end it pushes must be infinite */
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++) {
+                    int s = mpq_sgn(W->m[i][j]) * (num[j] > 0 ? 1 : -1);
+                    if (!isinf(num[j]) || s == 0) continue;
+                    st->inf_checks++;
+                    if ((s > 0 && b->hi[i] != HUGE_VAL) || (s < 0 && b->lo[i] != -HUGE_VAL)) {
+                        fails++;
+                        if (!quiet) FAIL("%s: leaf %s vertex %ld: infinite coordinate, finite end on axis %d\n",
+                                         file, L->path, k, i);
+                    }
+                }
+            continue;
+        }
+        for (int j = 0; j < 3; j++) {
+            mpq_set_d(v[j], num[j]);
+            if (den != 1.0) { mpq_set_d(t, den); mpq_div(v[j], v[j], t); }
+        }
+        st->vertices++;
+        for (int i = 0; i < 3; i++) {
+            mpq_set(y, W->m[i][3]);
+            for (int j = 0; j < 3; j++) { mpq_mul(t, W->m[i][j], v[j]); mpq_add(y, y, t); }
+            if (outside(y, b, i, tmp)) {
+                fails++;
+                if (!quiet && fails <= 5)
+                    FAIL("%s: leaf %s vertex %ld axis %d = %.17g outside [%.17g, %.17g]\n",
+                         file, L->path, k, i, mpq_get_d(y), b->lo[i], b->hi[i]);
+            }
+            if (*nh == 0 || mpq_cmp(y, hlo[i]) < 0) mpq_set(hlo[i], y);
+            if (*nh == 0 || mpq_cmp(y, hhi[i]) > 0) mpq_set(hhi[i], y);
+        }
+        (*nh)++;
+    next:;
+    }
+    if (corners) {
+        for (int c = 0; c < 8; c++) {
+            for (int j = 0; j < 3; j++) mpq_set_d(v[j], (c >> j) & 1 ? A->max[j] : A->min[j]);
+            for (int i = 0; i < 3; i++) {
+                mpq_set(y, W->m[i][3]);
+                for (int j = 0; j < 3; j++) { mpq_mul(t, W->m[i][j], v[j]); mpq_add(y, y, t); }
+                st->corners++;
+                if (outside(y, b, i, tmp)) {
+                    fails++;
+                    if (!quiet) FAIL("%s: leaf %s min/max corner %d axis %d outside the box\n", file, L->path, c, i);
+                }
+            }
+        }
+    }
+done:
+    for (int j = 0; j < 3; j++) mpq_clear(v[j]);
+    mpq_clears(y, t, tmp, NULL);
+    return fails;
+}
+
+/* exact image of box b (finite) under W on axis i: lo, hi */
+static void box_image(const cbx_box *b, const qmap *W, int i, mpq_t lo, mpq_t hi)
+{
+    mpq_t a, c, t;
+    mpq_inits(a, c, t, NULL);
+    mpq_set(lo, W->m[i][3]);
+    mpq_set(hi, W->m[i][3]);
+    for (int j = 0; j < 3; j++) {
+        mpq_set_d(t, b->lo[j]); mpq_mul(a, W->m[i][j], t);
+        mpq_set_d(t, b->hi[j]); mpq_mul(c, W->m[i][j], t);
+        if (mpq_cmp(a, c) > 0) mpq_swap(a, c);
+        mpq_add(lo, lo, a);
+        mpq_add(hi, hi, c);
+    }
+    mpq_clears(a, c, t, NULL);
+}
+
+static double qabs_max(const mpq_t a, const mpq_t b)
+{
+    double x = fabs(mpq_get_d(a)), y = fabs(mpq_get_d(b));
+    return x > y ? x : y;
+}
+
+/* All checks of one loaded document (fromv: --from-vertices boxes). */
+static void check_doc(const gl_doc *d, int fromv, stats *st, const char *file)
+{
+    qmap *W = malloc((size_t)(d->nn + 1) * sizeof *W);
+    if (!W) { fprintf(stderr, "out of memory\n"); exit(2); }
+    for (int k = 0; k < d->nn; k++) qm_init(&W[k]);
+    mpq_t hlo[3], hhi[3], ilo, ihi;
+    for (int j = 0; j < 3; j++) { mpq_init(hlo[j]); mpq_init(hhi[j]); }
+    mpq_inits(ilo, ihi, NULL);
+    int teeth_done = 0;
+    for (int l = 0; l < d->nl; l++) {
+        const gl_leaf *L = &d->leaves[l];
+        const gl_acc *A = &d->accs[L->acc];
+        const qmap *M = world(d, W, L->node);
+        int nh;
+        st->instances++;
+        check_leaf(d, L, &L->world, M, !fromv, !fromv, st, file, 0, hlo, hhi, &nh);
+        /* the scene box holds the leaf box */
+        const gl_scene *G = &d->scenes[L->scene];
+        for (int i = 0; i < 3; i++)
+            if (G->world.lo[i] > L->world.lo[i] || G->world.hi[i] < L->world.hi[i])
+                FAIL("%s: scene %d does not hold leaf %s on axis %d\n", file, L->scene, L->path, i);
+        int fin = !A->vinf && L->st != CBX_EINVAL;
+        for (int i = 0; i < 3; i++) {
+            /* rounding: over the exact image of the box that was mapped */
+            if (fin) {
+                box_image(&L->local, M, i, ilo, ihi);
+                double sc = qabs_max(ilo, ihi);
+                double e = excess(L->world.lo[i], ilo, sc, 0), f = excess(L->world.hi[i], ihi, sc, 1);
+                double *mx = fromv ? &st->round_v : &st->round_mm;
+                if (e > *mx) *mx = e;
+                if (f > *mx) *mx = f;
+            }
+            /* all told: over the exact hull of the mapped vertices */
+            if (nh > 0 && fin) {
+                double sc = qabs_max(hlo[i], hhi[i]), e = excess(L->world.lo[i], hlo[i], sc, 0), f = excess(L->world.hi[i], hhi[i], sc, 1);
+                double *mx = fromv ? &st->excess_v : &st->excess_mm;
+                if (e > *mx) *mx = e;
+                if (f > *mx) *mx = f;
+            }
+        }
+        /* teeth: lo[0] one ulp above the exact hull's lo must be caught */
+        if (!teeth_done && nh > 0 && isfinite(L->world.lo[0]) && !A->outside) {
+            cbx_box b = L->world;
+            b.lo[0] = nextafter(mpq_get_d(hlo[0]), HUGE_VAL);   /* > exact min */
+            stats scratch;
+            memset(&scratch, 0, sizeof scratch);
+            int nh2;
+            if (check_leaf(d, L, &b, M, 0, !fromv, &scratch, file, 1, hlo, hhi, &nh2) == 0)
+                FAIL("%s: teeth: a box one ulp inside the exact hull was not caught (leaf %s)\n", file, L->path);
+            st->teeth++;
+            teeth_done = 1;
+        }
+    }
+    for (int j = 0; j < 3; j++) { mpq_clear(hlo[j]); mpq_clear(hhi[j]); }
+    mpq_clears(ilo, ihi, NULL);
+    for (int k = 0; k < d->nn; k++) qm_clear(&W[k]);
+    free(W);
+}
+
+/* ---- files and expectations --------------------------------------------- */
+typedef struct expect { char file[512]; char kind[8]; char sub[200]; int seen; } expect;
+
+static int read_expect(const char *path, expect **out)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) { fprintf(stderr, "cannot open %s\n", path); exit(2); }
+    char line[1024];
+    int n = 0, cap = 0;
+    expect *e = NULL;
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (line[0] == '#' || line[0] == '\0') continue;
+        if (n == cap) { cap = cap ? 2 * cap : 64; e = realloc(e, (size_t)cap * sizeof *e); if (!e) exit(2); }
+        memset(&e[n], 0, sizeof e[n]);
+        int pos = 0;
+        if (sscanf(line, "%511s %7s %n", e[n].file, e[n].kind, &pos) < 2) { fprintf(stderr, "bad line: %s\n", line); exit(2); }
+        snprintf(e[n].sub, sizeof e[n].sub, "%s", line + pos);
+        n++;
+    }
+    fclose(f);
+    *out = e;
+    return n;
+}
+
+static int cmpstr(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
+
+static void find_files(const char *dir, char ***list, int *n, int *cap)
+{
+    DIR *D = opendir(dir);
+    struct dirent *e;
+    if (!D) return;
+    while ((e = readdir(D)) != NULL) {
+        if (e->d_name[0] == '.') continue;
+        char p[1024];
+        struct stat sb;
+        snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
+        if (stat(p, &sb) != 0) continue;
+        if (S_ISDIR(sb.st_mode)) { find_files(p, list, n, cap); continue; }
+        size_t len = strlen(p);
+        if (!(len > 5 && strcmp(p + len - 5, ".gltf") == 0) && !(len > 4 && strcmp(p + len - 4, ".glb") == 0)) continue;
+        if (*n == *cap) { *cap = *cap ? 2 * *cap : 64; *list = realloc(*list, (size_t)*cap * sizeof **list); if (!*list) exit(2); }
+        (*list)[(*n)++] = strdup(p);
+    }
+    closedir(D);
+}
+
+/* Load one file both ways and check it against its expectation. */
+static void run_file(const char *path, const char *label, const char *kind, const char *sub, stats *st)
+{
+    char err[700], notes[4096];
+    gl_doc d;
+    st->files++;
+    FILE *nf = tmpfile();
+    if (!nf) { fprintf(stderr, "tmpfile failed\n"); exit(2); }
+    int rc = gltf_load(&d, path, 0, nf, err, sizeof err);
+    rewind(nf);
+    size_t nn = fread(notes, 1, sizeof notes - 1, nf);
+    notes[nn] = '\0';
+    fclose(nf);
+    if (strcmp(kind, "error") == 0) {
+        if (rc == 0) { FAIL("%s: loaded, expected the error '%s'\n", label, sub); gltf_free(&d); return; }
+        if (!strstr(err, sub)) FAIL("%s: error '%s' does not contain '%s'\n", label, err, sub);
+        if (strncmp(err, path, strlen(path)) != 0 || err[strlen(path)] != ':')
+            FAIL("%s: error '%s' does not start with 'FILE:'\n", label, err);
+        st->refused++;
+    } else if (rc != 0) {
+        FAIL("%s: refused: %s\n", label, err);
+        return;
+    } else {
+        st->loaded++;
+        if (strcmp(kind, "flag") == 0) {
+            if (!strstr(notes, sub)) FAIL("%s: notes '%s' do not contain '%s'\n", label, notes, sub);
+            st->flagged++;
+        } else if (d.notes != 0) {
+            FAIL("%s: expected no note, got: %s\n", label, notes);
+        }
+        if (strstr(label, "2CylinderEngine.glb")) {
+            int nm = 0, na = 0;
+            long nv = 0, vi = 0;
+            for (int k = 0; k < d.nn; k++) nm += d.nodes[k].has_matrix;
+            for (int k = 0; k < d.na; k++) if (d.accs[k].used) { na++; nv += d.accs[k].count; }
+            for (int k = 0; k < d.nl; k++) vi += d.accs[d.leaves[k].acc].count;
+            printf("test_gltf: %s: %d nodes (%d with a matrix), %d POSITION accessors holding %ld vertices, "
+                   "%d mesh instances, %ld vertex instances\n", label, d.nn, nm, na, nv, d.nl, vi);
+        }
+        check_doc(&d, 0, st, label);
+        gltf_free(&d);
+    }
+    /* --from-vertices: every file with readable vertices loads (or is
+     * refused for a reason that is not min/max) */
+    if (gltf_load(&d, path, 1, NULL, err, sizeof err) == 0) {
+        check_doc(&d, 1, st, label);
+        gltf_free(&d);
+    }
+}
+
+/* The tool: its printed boxes equal gltf_load's, bit for bit. */
+static void run_tool(const char *certbox, const char *path, int want_rc, stats *st)
+{
+    char cmd[1200], line[1200];
+    snprintf(cmd, sizeof cmd, "%s --hex '%s' 2>/dev/null; echo \"rc $?\"", certbox, path);
+    FILE *p = popen(cmd, "r");
+    if (!p) { FAIL("popen %s\n", cmd); return; }
+    gl_doc d;
+    char err[700];
+    int loaded = gltf_load(&d, path, 0, NULL, err, sizeof err) == 0, li = 0, si = 0, rc = -1;
+    while (fgets(line, sizeof line, p)) {
+        double v[6];
+        char a[64], b[64], s[32];
+        if (sscanf(line, "rc %d", &rc) == 1) continue;
+        if (!loaded) { FAIL("tool printed for a refused file: %s", line); continue; }
+        const cbx_box *bx = NULL;
+        if (sscanf(line, "leaf %63s %63s lo %la %la %la hi %la %la %la %31s", a, b, &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], s) == 9)
+            bx = li < d.nl ? &d.leaves[li++].world : NULL;
+        else if (sscanf(line, "scene lo %la %la %la hi %la %la %la %31s", &v[0], &v[1], &v[2], &v[3], &v[4], &v[5], s) == 7)
+            bx = si < d.ns ? &d.scenes[si++].world : NULL;
+        if (!bx) { FAIL("tool line not understood: %s", line); continue; }
+        for (int j = 0; j < 3; j++)
+            if (memcmp(&v[j], &bx->lo[j], sizeof v[j]) != 0 || memcmp(&v[3 + j], &bx->hi[j], sizeof v[j]) != 0)
+                FAIL("tool box differs from gltf_load's: %s", line);
+    }
+    pclose(p);
+    if (rc != want_rc) FAIL("tool on %s: exit %d, expected %d\n", path, rc, want_rc);
+    if (loaded && (li != d.nl || si != d.ns)) FAIL("tool on %s: %d leaves %d scenes printed, expected %d %d\n", path, li, si, d.nl, d.ns);
+    if (loaded) gltf_free(&d);
+    st->files++;
+}
+
+int main(int argc, char **argv)
+{
+    const char *adir = argc > 1 ? argv[1] : "/usr/share/assimp/models/glTF2";
+    const char *ddir = argc > 2 ? argv[2] : "tests/data/gltf";
+    const char *tool = argc > 3 ? argv[3] : "build/certbox";
+    char path[1200];
+    clock_t t0 = clock();
+    stats st;
+    memset(&st, 0, sizeof st);
+    expect *ex;
+    snprintf(path, sizeof path, "%s/expect.txt", ddir);
+    int ne = read_expect(path, &ex);
+    char **files = NULL;
+    int nf = 0, cap = 0;
+    find_files(adir, &files, &nf, &cap);
+    if (nf == 0) { fprintf(stderr, "FAIL no glTF file under %s (install assimp-testmodels: sh scripts/deps.sh test)\n", adir); return 1; }
+    qsort(files, (size_t)nf, sizeof *files, cmpstr);
+    long assimp_files = nf;
+    for (int k = 0; k < nf; k++) {
+        const char *rel = files[k] + strlen(adir) + 1, *kind = "ok", *sub = "";
+        for (int e = 0; e < ne; e++)
+            if (strncmp(ex[e].file, "assimp:", 7) == 0 && strcmp(ex[e].file + 7, rel) == 0) {
+                kind = ex[e].kind; sub = ex[e].sub; ex[e].seen = 1;
+            }
+        run_file(files[k], rel, kind, sub, &st);
+    }
+    for (int e = 0; e < ne; e++) {
+        if (strncmp(ex[e].file, "data:", 5) == 0) {
+            snprintf(path, sizeof path, "%s/%s", ddir, ex[e].file + 5);
+            run_file(path, ex[e].file, ex[e].kind, ex[e].sub, &st);
+            ex[e].seen = 1;
+        }
+        if (!ex[e].seen) FAIL("%s: listed in expect.txt but not found\n", ex[e].file);
+    }
+    int nhand = 0;
+    for (int e = 0; e < ne; e++) nhand += strncmp(ex[e].file, "data:", 5) == 0;
+    printf("test_gltf: %ld files (%ld from assimp-testmodels, %d hand-made): %ld loaded (%ld of them flagged), %ld refused with the expected error\n",
+           st.files, assimp_files, nhand, st.loaded, st.flagged, st.refused);
+    printf("test_gltf: %ld mesh instances (min/max boxes and --from-vertices boxes), %ld vertex instances inside their box (exact, GMP), "
+           "%ld min/max corners inside, %ld infinite-coordinate ends, %ld teeth caught\n",
+           st.instances, st.vertices, st.corners, st.inf_checks, st.teeth);
+    printf("test_gltf: max relative excess (per axis, relative to the axis' largest magnitude) of a box over the exact image of\n"
+           "  the box it maps (rounding only): %.3g with min/max boxes, %.3g with --from-vertices\n"
+           "  the exact hull of the mapped vertices (rounding + boxing in local coordinates + loose min/max): %.3g with min/max, %.3g with --from-vertices\n",
+           st.round_mm, st.round_v, st.excess_mm, st.excess_v);
+    /* the tool itself */
+    long before = n_fail;
+    char p1[1200], p2[1200], p3[1200];
+    snprintf(p1, sizeof p1, "%s/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", adir);
+    snprintf(p2, sizeof p2, "%s/trs.gltf", ddir);
+    snprintf(p3, sizeof p3, "%s/RecursiveNodes/RecursiveNodes.gltf", adir);
+    st.files = 0;
+    run_tool(tool, p1, 0, &st);
+    run_tool(tool, p2, 0, &st);
+    run_tool(tool, p3, 2, &st);
+    snprintf(p3, sizeof p3, "%s/claims.gltf", ddir);
+    run_tool(tool, p3, 1, &st);
+    printf("test_gltf: the tool on %ld files: printed boxes equal gltf_load's bit for bit, exit statuses as expected%s\n",
+           st.files, n_fail > before ? " (NOT: see above)" : "");
+    printf("test_gltf: %.1f s, %ld failure%s\n", (double)(clock() - t0) / CLOCKS_PER_SEC, n_fail, n_fail == 1 ? "" : "s");
+    for (int k = 0; k < nf; k++) free(files[k]);
+    free(files);
+    free(ex);
+    return n_fail ? 1 : 0;
+}
