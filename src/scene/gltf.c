@@ -58,8 +58,8 @@ static iv mul_enc(double x, double y)
         r.hi = isinf(p) ? p : up(p);
     } else {
         double e = fma(x, y, -p);                 /* exact: x*y - p */
-        r.lo = e < 0 ? dn(p) : p;
-        r.hi = e > 0 ? up(p) : p;
+        r.lo = !(e >= 0) ? dn(p) : p;             /* NaN e: widen both */
+        r.hi = !(e <= 0) ? up(p) : p;
     }
     return r;
 }
@@ -76,8 +76,8 @@ static iv add_enc(double x, double y)
     }
     double bb = s - x;                            /* TwoSum: exact error */
     double e = (x - (s - bb)) + (y - bb);
-    r.lo = e < 0 ? dn(s) : s;
-    r.hi = e > 0 ? up(s) : s;
+    r.lo = !(e >= 0) ? dn(s) : s;                 /* NaN e (a spurious */
+    r.hi = !(e <= 0) ? up(s) : s;                 /* overflow): widen  */
     return r;
 }
 
@@ -94,8 +94,8 @@ static iv div_enc(double x, double y)
         return r;
     }
     double e = fma(q, y, -x);                     /* q*y - x, exact */
-    r.lo = e > 0 ? dn(q) : q;                     /* q > x/y when e > 0 */
-    r.hi = e < 0 ? up(q) : q;
+    r.lo = !(e <= 0) ? dn(q) : q;                 /* q > x/y when e > 0 */
+    r.hi = !(e >= 0) ? up(q) : q;
     return r;
 }
 
