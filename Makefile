@@ -101,8 +101,11 @@ ifeq ($(HAVE_JANSSON),1)
 TOOL_CFLAGS  += -DCBX_GLTF $(shell pkg-config --cflags jansson)
 TOOL_LIBS    += $(shell pkg-config --libs jansson)
 endif
+# build/tool-config changes when jansson comes or goes: the tool is rebuilt
+TOOL_STAMP   := $(B)/tool-config
+$(shell mkdir -p $(B) && { [ "$$(cat $(TOOL_STAMP) 2>/dev/null)" = "gltf=$(HAVE_JANSSON)" ] || echo "gltf=$(HAVE_JANSSON)" > $(TOOL_STAMP); })
 NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjansson-dev): run sh scripts/deps.sh test as root, or apt-get install libjansson-dev" >&2; exit 1; }
-$(B)/certbox: src/scene/main.c $(SCENESRC) $(GLTFSRC) src/scene/scene.h src/scene/gltf.h $(B)/libcertbox.a
+$(B)/certbox: src/scene/main.c $(SCENESRC) $(GLTFSRC) src/scene/scene.h src/scene/gltf.h $(B)/libcertbox.a $(TOOL_STAMP)
 	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
 	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) src/scene/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
 $(B)/test_gltf: tests/test_gltf.c $(GLTFSRC) src/scene/gltf.h $(B)/libcertbox.a
