@@ -1353,6 +1353,15 @@ static void print_box(const cbx_box *b, int hex, int json)
         printf("lo %s %s %s hi %s %s %s", t[0], t[1], t[2], t[3], t[4], t[5]);
 }
 
+/* The `name` of element k of top-level array `arr` as a JSON string
+ * (escaped by jansson; malloc'd), or NULL if it has none. */
+static char *name_json(const gl_doc *d, const char *arr, int k)
+{
+    json_t *o = json_array_get(json_object_get((json_t *)d->json, arr), (size_t)k);
+    json_t *n = o ? json_object_get(o, "name") : NULL;
+    return json_is_string(n) ? json_dumps(n, JSON_ENCODE_ANY) : NULL;
+}
+
 int gltf_main(int argc, char **argv)
 {
     int json = 0, hex = 0, fromv = 0;
@@ -1380,8 +1389,12 @@ int gltf_main(int argc, char **argv)
         for (int k = G->first; k < G->first + G->n; k++) {
             const gl_leaf *L = &d.leaves[k];
             if (json) {
-                printf("    {\"path\": \"%s\", \"mesh\": %d, \"primitive\": %d, \"accessor\": %d, ",
-                       L->path, L->mesh, L->prim, L->acc);
+                char *nn = name_json(&d, "nodes", L->node), *mn = name_json(&d, "meshes", L->mesh);
+                printf("    {\"path\": \"%s\", \"node\": %d, \"node_name\": %s, \"mesh\": %d, \"mesh_name\": %s, "
+                       "\"primitive\": %d, \"accessor\": %d, ",
+                       L->path, L->node, nn ? nn : "null", L->mesh, mn ? mn : "null", L->prim, L->acc);
+                free(nn);
+                free(mn);
                 print_box(&L->world, hex, 1);
                 printf(", \"status\": \"%s\"}%s\n", cbx_status_name(L->st), k + 1 < G->first + G->n ? "," : "");
             } else {

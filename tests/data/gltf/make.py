@@ -105,6 +105,12 @@ write("uri_abs.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "/et
 write("uri_dotdot.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "sub/../../gltf/short.bin"}]))
 write("uri_pct_dotdot.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "%2e%2E/gltf/short.bin"}]))
 write("uri_pct_abs.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "%2Fetc%2Fpasswd"}]))
+# a symbolic link in the folder that leads out of it
+import os
+if os.path.lexists("escape.bin"):
+    os.remove("escape.bin")
+os.symlink("../../../README.md", "escape.bin")
+write("uri_symlink.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "escape.bin"}]))
 write("uri_scheme.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "file:///etc/passwd"}]))
 write("uri_pct_bad.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": "a%zz.bin"}]))
 write("base64_bad.gltf", doc([{"mesh": 0}], buffers=[{"byteLength": 96, "uri": b64(cube)[:-8] + "*AAAAAAA"}]))
