@@ -327,7 +327,8 @@ static void check_doc(const gl_doc *d, int fromv, stats *st, const char *file)
             }
         }
         /* teeth: lo[0] one ulp above the exact hull's lo must be caught */
-        if (!teeth_done && nh > 0 && isfinite(L->world.lo[0]) && !A->outside) {
+        double h0 = nh > 0 ? mpq_get_d(hlo[0]) : 0.0;     /* beyond DBL_MAX: no double inside */
+        if (!teeth_done && nh > 0 && isfinite(L->world.lo[0]) && !A->outside && isfinite(h0) && fabs(h0) < DBL_MAX) {
             cbx_box b = L->world;
             b.lo[0] = nextafter(mpq_get_d(hlo[0]), HUGE_VAL);   /* > exact min */
             stats scratch;
