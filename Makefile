@@ -2,7 +2,8 @@
 # goes to build/; only make install and make proof-report write elsewhere.
 #   make          the static and shared libraries (build/libcertbox.a,
 #                 build/libcertbox.so*), build/certbox.pc and the scene tool
-#                 build/certbox: a C compiler is all it needs (no GMP/MPFR)
+#                 build/certbox: a C compiler is all it needs (no GMP/MPFR;
+#                 glTF input when pkg-config finds jansson, docs/gltf.md)
 #   make demo     build the demo (links the GMP/MPFR test oracle) and run it,
 #                 then the scene tool on examples/robot.scene (installs
 #                 missing packages)
