@@ -1231,7 +1231,7 @@ static int load(ctx *c)
         snprintf(p, sizeof p, "/meshes/%zu", k);
         if (check_common(c, json_array_get(meshes, k), p) != 0) { free(checked); return -1; }
     }
-    long long sc;
+    long long sc;                  /* checked only: every scene is printed */
     if (get_uint(c, c->root, "scene", "", (long long)ns, "scene", 0, &sc) < 0 || load_nodes(c, nodes, nn, nm) != 0) {
         free(checked);
         return -1;
@@ -1300,7 +1300,6 @@ static int load(ctx *c)
     }
     free(stack);
     free(checked);
-    (void)sc;
     return rc;
 }
 
