@@ -349,6 +349,23 @@ static int check_errors(int *count)
     }
     free(t);
     (*count)++;
+    /* a NUL byte is refused naming its line and column (it was "FILE:0:") */
+#define NUL_CASE(text, want) {text, sizeof text - 1, want}
+    static const struct { const char *text; size_t n; const char *want; } nul[] = {
+        NUL_CASE("certbox-scene 1\nnode a\nbox b a\0 0 0 0 1 1 1\n", "t.scene:3: the file contains a NUL byte (column 8)"),
+        NUL_CASE("\0certbox-scene 1\n", "t.scene:1: the file contains a NUL byte (column 1)"),
+        NUL_CASE("certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 1\n\0", "t.scene:4: the file contains a NUL byte (column 1)"),
+    };
+#undef NUL_CASE
+    for (size_t k = 0; k < sizeof nul / sizeof nul[0]; k++) {
+        err[0] = '\0';
+        if (scene_parse_buf(&s, nul[k].text, nul[k].n, "t.scene", err, sizeof err) == 0
+            || strcmp(err, nul[k].want) != 0) {
+            fprintf(stderr, "FAIL NUL case %zu: '%s', expected '%s'\n", k, err, nul[k].want);
+            fails++;
+        }
+        (*count)++;
+    }
     return fails;
 }
 
@@ -378,7 +395,8 @@ int main(int argc, char **argv)
     printf("  check containment %ld leaf-axes checked, %ld failed\n", st.checks, st.fails);
     printf("test_scene: tightness (world width / exact width, static scenes, %ld axes): "
            "max %.6f median %.9f\n", st.ratios_n, mx, med);
-    printf("test_scene: %d broken scenes, %d not rejected at the right line\n", nerr, efails);
+    printf("test_scene: %d broken scenes (3 of them with a NUL byte: line and column named), "
+           "%d not rejected at the right line\n", nerr, efails);
     free(st.ratios);
     int failed = bad || st.fails || efails || st.checks == 0;
     printf("%s\n", failed ? "test_scene: FAILED" : "test_scene: passed");

@@ -430,6 +430,23 @@ bad:
     return -1;
 }
 
+int scene_parse_buf(scene *s, const char *text, size_t n, const char *file, char *err, size_t errlen)
+{
+    const char *nul = memchr(text, '\0', n);
+    if (nul) {
+        /* name the line (and column) of the first NUL, counted as the parser counts */
+        long line = 1, col = 1;
+        for (const char *c = text; c < nul; c++) {
+            if (*c == '\n') { line++; col = 1; }
+            else col++;
+        }
+        memset(s, 0, sizeof *s);
+        snprintf(err, errlen, "%s:%ld: the file contains a NUL byte (column %ld)", file, line, col);
+        return -1;
+    }
+    return scene_parse(s, text, file, err, errlen);
+}
+
 int scene_load(scene *s, const char *path, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
@@ -458,12 +475,7 @@ int scene_load(scene *s, const char *path, char *err, size_t errlen)
         return -1;
     }
     text[n] = '\0';
-    if (strlen(text) != n) {
-        free(text);
-        snprintf(err, errlen, "%s:0: the file contains a NUL byte", path);
-        return -1;
-    }
-    int rc = scene_parse(s, text, path, err, errlen);
+    int rc = scene_parse_buf(s, text, n, path, err, errlen);
     free(text);
     return rc;
 }

@@ -52,7 +52,10 @@ typedef struct scene {
  * and err holds "FILE:LINE: message" (file is the name used in messages);
  * on failure nothing is kept (the scene is freed). */
 int scene_parse(scene *s, const char *text, const char *file, char *err, size_t errlen);
-/* Read a file and parse it. */
+/* The same for text[0 .. n-1] (text[n] must be '\0'): a NUL byte inside is
+ * refused with its line, "FILE:LINE: the file contains a NUL byte (column C)". */
+int scene_parse_buf(scene *s, const char *text, size_t n, const char *file, char *err, size_t errlen);
+/* Read a file and parse it (scene_parse_buf). */
 int scene_load(scene *s, const char *path, char *err, size_t errlen);
 /* Compute every leaf's world box and the scene box. */
 void scene_eval(scene *s);
