@@ -208,14 +208,10 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
 
 static xu_rng rng = {88172645463325252u};
 
-static int check_file(const char *file, stats *st, long *times_total)
+/* Check a parsed scene (file: its name in messages); frees it. */
+static int check_scene(scene *sp, const char *file, stats *st, long *times_total)
 {
-    scene s;
-    char err[512];
-    if (scene_load(&s, file, err, sizeof err) != 0) {
-        fprintf(stderr, "FAIL %s: %s\n", err, "scene not loaded");
-        return 1;
-    }
+    scene s = *sp;
     scene_eval(&s);
     int has_motion = 0;
     for (int n = 0; n < s.nn; n++) has_motion |= s.nodes[n].motion;
@@ -281,6 +277,63 @@ static int check_file(const char *file, stats *st, long *times_total)
     return bad;
 }
 
+static int check_file(const char *file, stats *st, long *times_total)
+{
+    scene s;
+    char err[512];
+    if (scene_load(&s, file, err, sizeof err) != 0) {
+        fprintf(stderr, "FAIL %s: %s\n", err, "scene not loaded");
+        return 1;
+    }
+    return check_scene(&s, file, st, times_total);
+}
+
+/* Tiny and huge rotation axes act like the same axis at normal scale: an
+ * axis scaled by a power of two gives the same matrix, bit for bit (it was
+ * a non-rotation for 2e-162 0 2e-162 and NaN for 1e-170 0 0), and the
+ * leaf's box passes the exact containment check. */
+static int check_axes(stats *st, long *times_total, int *count)
+{
+    static const struct { const char *axis, *ref; } ax[] = {
+        {"2e-162 0 2e-162", "1 0 1"},
+        {"1e-170 0 0", "1 0 0"},
+        {"1e300 0 1e300", "1 0 1"},
+        {"0 -0x1p-1074 0", "0 -1 0"},
+        {"0x1.8p-900 0x1p-899 0", "3 4 0"},
+        {"0x1.8p+900 0x1p+901 0", "3 4 0"},
+        {"-0x1p-1060 0x1p-1060 0x1p-1061", "-2 2 1"},
+    };
+    static const char *deg[] = {"30", "-17.5", "90", "1e-300", "123456.789"};
+    int fails = 0;
+    char text[2][256], err[512];
+    for (size_t k = 0; k < sizeof ax / sizeof ax[0]; k++)
+        for (size_t d = 0; d < sizeof deg / sizeof deg[0]; d++) {
+            scene s[2];
+            int ok = 1;
+            for (int r = 0; r < 2; r++) {
+                snprintf(text[r], sizeof text[r], "certbox-scene 1\nnode a\n  rotate %s %s\nbox b a -1 0.5 2 3 4 5.25\n",
+                         r ? ax[k].ref : ax[k].axis, deg[d]);
+                if (scene_parse(&s[r], text[r], "axis.scene", err, sizeof err) != 0) {
+                    fprintf(stderr, "FAIL axis %s: %s\n", r ? ax[k].ref : ax[k].axis, err);
+                    return fails + 1;
+                }
+                scene_eval(&s[r]);
+            }
+            ok = memcmp(&s[0].ops[0].a, &s[1].ops[0].a, sizeof s[0].ops[0].a) == 0
+                 && memcmp(&s[0].leaves[0].world, &s[1].leaves[0].world, sizeof s[0].leaves[0].world) == 0
+                 && s[0].leaves[0].st == CBX_OK;
+            if (!ok) {
+                fprintf(stderr, "FAIL rotate %s %s: not the matrix and box of rotate %s %s\n",
+                        ax[k].axis, deg[d], ax[k].ref, deg[d]);
+                fails++;
+            }
+            scene_free(&s[1]);
+            fails += check_scene(&s[0], text[0], st, times_total);
+            (*count)++;
+        }
+    return fails;
+}
+
 static int cmp_d(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -306,6 +359,7 @@ static int check_errors(int *count)
         {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 nan\n", 3},
         {"certbox-scene 1\nnode a\nsphere b a 0 0 0 -1\n", 3},
         {"certbox-scene 1\nnode a\n  rotate 0 0 0 30\nbox b a 0 0 0 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a\n  rotate 1 0 0 1e15\nbox b a 0 0 0 1 1 1\n", 3},
         {"certbox-scene 1\nnode a\n  translate 1 0 0\n  translate 1 0 0\n  motion\n  translate 2 0 0\nbox b a 0 0 0 1 1 1\n", 2},
         {"certbox-scene 1\nnode a\n  motion\n  motion\nbox b a 0 0 0 1 1 1\n", 4},
         {"certbox-scene 1\ntranslate 1 0 0\n", 2},
@@ -383,25 +437,32 @@ int main(int argc, char **argv)
         bad |= check_file(argv[k], &st, &times);
     int nerr = 0;
     int efails = check_errors(&nerr);
+    int naxes = 0, ngen = 0;
+    long checks0 = st.checks;
+    int afails = check_axes(&st, &times, &naxes);
+    ngen += naxes;
+    printf("test_scene: %d tiny/huge rotation axes (7 axes x 5 angles) the same matrix and box as the axis "
+           "at normal scale, %ld exact checks, %d failed\n", naxes, st.checks - checks0, afails);
     double mx = 0, med = 0;
     if (st.ratios_n) {
         qsort(st.ratios, (size_t)st.ratios_n, sizeof *st.ratios, cmp_d);
         mx = st.ratios[st.ratios_n - 1];
         med = st.ratios[st.ratios_n / 2];
     }
-    printf("test_scene: %d files, %ld leaves, %ld scene evaluations at sampled times, "
+    printf("test_scene: %d files and %d generated scenes, %ld leaves, %ld scene evaluations at sampled times, "
            "%ld exact containment checks, %ld failures\n",
-           argc - 1, st.leaves, times, st.checks, st.fails);
+           argc - 1, ngen, st.leaves, times, st.checks, st.fails);
     printf("  check containment %ld leaf-axes checked, %ld failed\n", st.checks, st.fails);
     printf("test_scene: tightness (world width / exact width, static scenes, %ld axes): "
            "max %.6f median %.9f\n", st.ratios_n, mx, med);
     printf("test_scene: %d broken scenes (3 of them with a NUL byte: line and column named), "
            "%d not rejected at the right line\n", nerr, efails);
     free(st.ratios);
-    int failed = bad || st.fails || efails || st.checks == 0;
+    int failed = bad || st.fails || efails || afails || st.checks == 0;
     printf("%s\n", failed ? "test_scene: FAILED" : "test_scene: passed");
     /* the closing line CI reads: one item per exact check and broken file */
-    long items = st.checks + nerr + (argc - 1), nfail = st.fails + efails + bad + (st.checks == 0);
+    long items = st.checks + nerr + naxes + (argc - 1);
+    long nfail = st.fails + efails + afails + bad + (st.checks == 0);
     printf("%ld passed, %ld failed\n", items - nfail, nfail);
     return failed ? 1 : 0;
 }

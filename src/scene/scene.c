@@ -193,6 +193,14 @@ static void rotation(double x, double y, double z, double deg, double r[3][3])
         n[1] = y > 0 ? 1.0 : y < 0 ? -1.0 : 0.0;
         n[2] = z > 0 ? 1.0 : z < 0 ? -1.0 : 0.0;
     } else {
+        /* Scale the axis by a power of two (exact) so that its largest
+         * component lies in [0.5, 1): x*x can then neither overflow nor
+         * underflow to nothing (2e-162 squared did, and gave a non-rotation;
+         * 1e-170 gave 0/0).  The same bits as unscaled for every axis whose
+         * squares were in range: scaling by 2^k commutes with each rounding. */
+        int e;
+        (void)frexp(fmax(fabs(x), fmax(fabs(y), fabs(z))), &e);
+        x = ldexp(x, -e); y = ldexp(y, -e); z = ldexp(z, -e);
         double len = sqrt(x * x + y * y + z * z);
         n[0] = x / len; n[1] = y / len; n[2] = z / len;
         double t = deg * (SC_PI / 180.0);
@@ -293,8 +301,8 @@ static int statement(parser *p, char **tok, int nt)
             return -1;
         if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
             return fail(p, "rotation axis is zero");
-        if (!(fabs(v[0]) < 1e150 && fabs(v[1]) < 1e150 && fabs(v[2]) < 1e150 && fabs(v[3]) < 1e15))
-            return fail(p, "rotation axis or angle too large");
+        if (!(fabs(v[3]) < 1e15))   /* beyond, DEG * pi / 180 has no meaningful fraction of a turn */
+            return fail(p, "rotation angle too large (|DEGREES| must be below 1e15)");
         rotation(v[0], v[1], v[2], v[3], r);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
