@@ -15,6 +15,7 @@
  */
 #include <gmp.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -207,6 +208,7 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
 }
 
 static xu_rng rng = {88172645463325252u};
+static int collect_tightness = 1;   /* 0: generated scenes (no tightness figure) */
 
 /* Check a parsed scene (file: its name in messages); frees it. */
 static int check_scene(scene *sp, const char *file, stats *st, long *times_total)
@@ -232,6 +234,10 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
         (*times_total)++;
         for (int l = 0; l < s.nl; l++) {
             const sc_leaf *L = &s.leaves[l];
+            if (l > 0 && L->node == s.leaves[l - 1].node) {    /* the same exact map */
+                check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
+                continue;
+            }
             qm_ident(&W);
             for (int n = L->node; n >= 0; n = s.nodes[n].parent) {   /* W = N o W */
                 node_map(&s, n, tm[n], &N);
@@ -240,7 +246,7 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
                     for (int j = 0; j < 4; j++)
                         mpq_set(W.m[i][j], R.m[i][j]);
             }
-            check_leaf(L, &W, st, file, k == 0 && !has_motion);
+            check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
         }
     }
     st->leaves += s.nl;
@@ -286,6 +292,192 @@ static int check_file(const char *file, stats *st, long *times_total)
         return 1;
     }
     return check_scene(&s, file, st, times_total);
+}
+
+/* Parse a scene from text and check it like a file. */
+static int check_text(const char *text, const char *name, stats *st, long *times_total)
+{
+    scene s;
+    char err[512];
+    if (scene_parse(&s, text, name, err, sizeof err) != 0) {
+        fprintf(stderr, "FAIL %s: %s\n", err, "scene not parsed");
+        return 1;
+    }
+    return check_scene(&s, name, st, times_total);
+}
+
+/* A growing text buffer for generated scenes. */
+typedef struct sbuf { char *p; size_t n, cap; } sbuf;
+
+static void sb_add(sbuf *b, const char *fmt, ...)
+{
+    va_list ap;
+    for (;;) {
+        va_start(ap, fmt);
+        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
+        va_end(ap);
+        if (k < 0) { fprintf(stderr, "vsnprintf failed\n"); exit(2); }
+        if (b->p && b->n + (size_t)k < b->cap) { b->n += (size_t)k; return; }
+        b->cap = 2 * (b->cap + (size_t)k + 64);
+        b->p = realloc(b->p, b->cap);
+        if (!b->p) { fprintf(stderr, "out of memory\n"); exit(2); }
+    }
+}
+
+/* A deep random scene: a chain of nn nodes (a branch to a random earlier node with probability pb %), each
+ * with 0 to 3 operations near an isometry (so that 300 levels stay finite)
+ * or a motion node (probability pm %), and nl leaves on nodes near the
+ * bottom and anywhere.  Decimal numbers such as 0.1 are not doubles, so
+ * the matrices are not exact and every rounding path is taken. */
+static void gen_deep(xu_rng *r, sbuf *b, int nn, int nl, int pm, int pb)
+{
+    static const char *deg[] = {"30", "-45", "90", "1e-3", "123.456", "-179.9"};
+    b->n = 0;
+    sb_add(b, "certbox-scene 1\n");
+    for (int i = 0; i < nn; i++) {
+        if (i == 0) sb_add(b, "node n0\n");
+        else sb_add(b, "node n%d n%d\n", i, xu_rng_int(r, 0, 99) >= pb ? i - 1 : xu_rng_int(r, 0, i - 1));
+        int motion = xu_rng_int(r, 0, 99) < pm, nops = motion ? 2 : xu_rng_int(r, 0, 3);
+        for (int q = 0; q < nops; q++) {
+            if (motion && q == 1) sb_add(b, "  motion\n");
+            switch (xu_rng_int(r, 0, 5)) {
+            case 0: case 1:
+                sb_add(b, "  translate %.17g 0.1 %d\n", 20 * xu_rng_unit(r) - 10, xu_rng_int(r, -5, 5));
+                break;
+            case 2:
+                sb_add(b, "  scale %.17g %.17g 0.3\n", xu_rng_sign(r) * (0.8 + 0.45 * xu_rng_unit(r)),
+                       xu_rng_sign(r) * (0.8 + 0.45 * xu_rng_unit(r)));
+                b->n -= 4;      /* "0.3\n" -> a factor near 1 */
+                sb_add(b, "%s\n", xu_rng_int(r, 0, 1) ? "1.1" : "-0.9");
+                break;
+            case 3: case 4:
+                sb_add(b, "  rotate %.17g %.17g 0.25 %s\n", xu_rng_unit(r) - 0.5, xu_rng_unit(r), deg[xu_rng_int(r, 0, 5)]);
+                break;
+            default:
+                sb_add(b, "  matrix 1 0.1 %.17g 3  -0.05 1 0 0.1  0 %.17g 0.99 -2\n", 0.2 * xu_rng_unit(r) - 0.1,
+                       0.1 * xu_rng_unit(r));
+            }
+        }
+    }
+    for (int l = 0; l < nl; l++) {
+        int n = xu_rng_int(r, 0, 1) ? nn - 1 - xu_rng_int(r, 0, nn < 5 ? nn - 1 : 4) : xu_rng_int(r, 0, nn - 1);
+        double x = 10 * xu_rng_unit(r) - 5;
+        switch (xu_rng_int(r, 0, 2)) {
+        case 0: sb_add(b, "box b%d n%d %.17g -1 0.1 %.17g 0.5 0.7\n", l, n, x, x + 3 * xu_rng_unit(r)); break;
+        case 1: sb_add(b, "sphere b%d n%d %.17g 0.1 -2 %.17g\n", l, n, x, 2 * xu_rng_unit(r)); break;
+        default: sb_add(b, "ellipsoid b%d n%d 0.1 %.17g 1 0.5 0.2 %.17g 0.6 -0.8 0 0.8 0.6 0 0 0 1\n", l, n, x,
+                        xu_rng_unit(r));
+        }
+    }
+}
+
+/* The level-by-level evaluation (each leaf walked to the root through the
+ * kernels, as the tool did before it composed deep chains): quadratic, so
+ * for the random deep scenes only.  The tool's boxes must lie inside. */
+static void ref_eval(const scene *s, cbx_box *out)
+{
+    for (int k = 0; k < s->nl; k++) {
+        const sc_leaf *L = &s->leaves[k];
+        cbx_box b;
+        if (L->kind == SC_BOX) {
+            for (int j = 0; j < 3; j++) { b.lo[j] = L->v[j]; b.hi[j] = L->v[3 + j]; }
+        } else {
+            double c[3], rr[3], R[3][3];
+            for (int j = 0; j < 3; j++) c[j] = L->v[j];
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    R[i][j] = L->kind == SC_SPHERE ? i == j : L->v[6 + 3 * i + j];
+            for (int j = 0; j < 3; j++) rr[j] = L->kind == SC_SPHERE ? L->v[3] : L->v[3 + j];
+            (void)cbx_ellipsoid_box(c, rr, (const double (*)[3])R, &b);
+        }
+        for (int n = L->node; n >= 0; n = s->nodes[n].parent) {
+            const sc_node *N = &s->nodes[n];
+            if (N->motion) {
+                cbx_box o;
+                (void)cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, &b, &o);
+                b = o;
+            } else {
+                for (int q = N->first + N->n - 1; q >= N->first; q--)
+                    (void)cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, &b, &b);
+            }
+        }
+        out[k] = b;
+    }
+}
+
+/* Deep scenes: beyond 64 kernel steps a leaf goes on by composed segment
+ * maps (and past 64 more motion nodes by a world map).  Each scene: the
+ * exact check, and each box against the level-by-level one: identical,
+ * tighter, or looser.  Looser fails, except past 128 nested motion nodes
+ * (the world map's hull of M0 and M1, the price of linear time there:
+ * counted and its largest width ratio printed). */
+static int check_deep(stats *st, long *times_total, int *count, long *same, long *tighter,
+                      long *looser_hull, double *worst_hull)
+{
+    static const struct { int nn, nl, pm, pb, hull, reps; } shape[] = {
+        {40, 20, 10, 7, 0, 4},      /* within 64 steps mostly: the level-by-level path */
+        {150, 25, 0, 2, 0, 4},      /* no motion: segments only */
+        {300, 25, 10, 2, 0, 4},     /* segments and motion nodes */
+        {200, 10, 100, 0, 1, 2},    /* a chain of motion nodes: past 128 of them, the world map */
+    };
+    xu_rng r = {0x5eed5ce7e5ull};
+    sbuf b = {NULL, 0, 0};
+    int fails = 0;
+    char name[64], err[512];
+    for (size_t k = 0; k < sizeof shape / sizeof shape[0]; k++)
+        for (int rep = 0; rep < shape[k].reps; rep++) {
+            gen_deep(&r, &b, shape[k].nn, shape[k].nl, shape[k].pm, shape[k].pb);
+            snprintf(name, sizeof name, "deep-%d-%d-%d#%d", shape[k].nn, shape[k].nl, shape[k].pm, rep);
+            scene s;
+            if (scene_parse(&s, b.p, name, err, sizeof err) != 0) {
+                fprintf(stderr, "FAIL %s\n", err);
+                fails++;
+                continue;
+            }
+            scene_eval(&s);
+            cbx_box *ref = malloc((size_t)s.nl * sizeof *ref);
+            if (!ref) { fprintf(stderr, "out of memory\n"); exit(2); }
+            ref_eval(&s, ref);
+            for (int l = 0; l < s.nl; l++)
+                for (int j = 0; j < 3; j++) {
+                    double lo = s.leaves[l].world.lo[j], hi = s.leaves[l].world.hi[j];
+                    if (lo == ref[l].lo[j] && hi == ref[l].hi[j]) (*same)++;
+                    else if (lo >= ref[l].lo[j] && hi <= ref[l].hi[j]) (*tighter)++;
+                    else if (shape[k].hull) {
+                        double w = (hi - lo) / (ref[l].hi[j] - ref[l].lo[j]);
+                        (*looser_hull)++;
+                        if (w > *worst_hull) *worst_hull = w;
+                    } else {
+                        fprintf(stderr, "FAIL %s: leaf %s axis %d [%a, %a] looser than level by level [%a, %a]\n",
+                                name, s.leaves[l].name, j, lo, hi, ref[l].lo[j], ref[l].hi[j]);
+                        fails++;
+                    }
+                }
+            free(ref);
+            fails += check_scene(&s, name, st, times_total);
+            (*count)++;
+        }
+    free(b.p);
+    return fails;
+}
+
+/* Linear time: the chain of issue 18 (100,000 nodes of translate 1 0 0,
+ * 10,000 boxes on the deepest node) took 31 s; it must now simply finish
+ * (the time is the bench's business) with every box exactly checked. */
+static int check_long_chain(stats *st, long *times_total, int nodes, int leaves)
+{
+    sbuf b = {NULL, 0, 0};
+    sb_add(&b, "certbox-scene 1\nnode n0\n  translate 1 0 0\n");
+    for (int i = 1; i < nodes; i++)
+        sb_add(&b, "node n%d n%d\n  translate 1 0 0\n", i, i - 1);
+    for (int k = 0; k < leaves; k++)
+        sb_add(&b, "box b%d n%d %d 0 0 %d 1 1\n", k, nodes - 1, k, k + 1);
+    long c0 = st->checks;
+    int fails = check_text(b.p, "chain", st, times_total);
+    printf("test_scene: linear time: a %d-node chain of `translate 1 0 0` with %d boxes on its deepest node "
+           "evaluated, %ld exact checks, %d failed\n", nodes, leaves, st->checks - c0, fails);
+    free(b.p);
+    return fails;
 }
 
 /* Tiny and huge rotation axes act like the same axis at normal scale: an
@@ -437,12 +629,23 @@ int main(int argc, char **argv)
         bad |= check_file(argv[k], &st, &times);
     int nerr = 0;
     int efails = check_errors(&nerr);
-    int naxes = 0, ngen = 0;
-    long checks0 = st.checks;
+    /* generated scenes: exact checks, but no tightness figure (that one is
+     * the example files') */
+    collect_tightness = 0;
+    int naxes = 0, ndeep = 0;
+    long checks0 = st.checks, dsame = 0, dtight = 0, dhull = 0;
+    double whull = 0;
     int afails = check_axes(&st, &times, &naxes);
-    ngen += naxes;
     printf("test_scene: %d tiny/huge rotation axes (7 axes x 5 angles) the same matrix and box as the axis "
            "at normal scale, %ld exact checks, %d failed\n", naxes, st.checks - checks0, afails);
+    checks0 = st.checks;
+    int dfails = check_deep(&st, &times, &ndeep, &dsame, &dtight, &dhull, &whull);
+    printf("test_scene: %d deep random scenes (up to 300 nodes, motion nodes; past 64 steps composed), "
+           "%ld exact checks, %d failed; against level by level: %ld axes identical, %ld tighter, "
+           "%ld looser past 128 nested motion nodes (width up to %.3g times)\n",
+           ndeep, st.checks - checks0, dfails, dsame, dtight, dhull, whull);
+    int cfails = check_long_chain(&st, &times, 100000, 10000);
+    int ngen = naxes + ndeep + 1, gfails = afails + dfails + cfails;
     double mx = 0, med = 0;
     if (st.ratios_n) {
         qsort(st.ratios, (size_t)st.ratios_n, sizeof *st.ratios, cmp_d);
@@ -458,11 +661,11 @@ int main(int argc, char **argv)
     printf("test_scene: %d broken scenes (3 of them with a NUL byte: line and column named), "
            "%d not rejected at the right line\n", nerr, efails);
     free(st.ratios);
-    int failed = bad || st.fails || efails || afails || st.checks == 0;
+    int failed = bad || st.fails || efails || gfails || st.checks == 0;
     printf("%s\n", failed ? "test_scene: FAILED" : "test_scene: passed");
-    /* the closing line CI reads: one item per exact check and broken file */
-    long items = st.checks + nerr + naxes + (argc - 1);
-    long nfail = st.fails + efails + afails + bad + (st.checks == 0);
+    /* the closing line CI reads: one item per exact check, broken file and generated scene */
+    long items = st.checks + nerr + ngen + (argc - 1);
+    long nfail = st.fails + efails + gfails + bad + (st.checks == 0);
     printf("%ld passed, %ld failed\n", items - nfail, nfail);
     return failed ? 1 : 0;
 }
