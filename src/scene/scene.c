@@ -540,7 +540,9 @@ static cbx_status leaf_box(const sc_leaf *L, cbx_box *b)
  * image of the box inside each result.  The composition is not a proven
  * kernel: its rounding is argued here and checked by tests/test_scene.c
  * against exact rationals. */
+#ifndef SC_WALK
 #define SC_WALK 64
+#endif
 
 typedef struct sc_imap { double lo[3][4], hi[3][4]; } sc_imap;
 
