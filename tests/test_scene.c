@@ -371,6 +371,57 @@ static void gen_deep(xu_rng *r, sbuf *b, int nn, int nl, int pm, int pb)
     }
 }
 
+/* Scenes where the composed maps are the whole bound, so that a wrong
+ * rounding direction shows: kind 0, a chain of nn nodes with 65 to 90
+ * operations each (more than a leaf's 64 level-by-level steps, so its leaves
+ * go straight to the interval maps) and point or thin box leaves; kind 1, a
+ * chain of nn motion nodes, each a translation moving by 0.001 to 0.01
+ * (past 128 of them: the world map with the hull of M0 and M1); kind 2,
+ * nodes of 70 operations that are exact in doubles (small power-of-two
+ * translations, signed permutations) but for a scale and a translation
+ * by decimals, and
+ * point leaves: the result is a few units in the last place wide, so a
+ * product or sum rounded the wrong way fails the exact check. */
+static void gen_tight(xu_rng *r, sbuf *b, int kind, int nn, int nl)
+{
+    b->n = 0;
+    sb_add(b, "certbox-scene 1\n");
+    for (int i = 0; i < nn; i++) {
+        if (i == 0) sb_add(b, "node n0\n");
+        else sb_add(b, "node n%d n%d\n", i, i - 1);
+        if (kind == 1) {
+            sb_add(b, "  translate 0.1 %.17g 0\n  motion\n  translate %.17g 0.1 0.3\n",
+                   0.01 * xu_rng_unit(r), 0.001 + 0.01 * xu_rng_unit(r));
+            continue;
+        }
+        if (kind == 2) {
+            int a = xu_rng_int(r, 0, 69), c = xu_rng_int(r, 0, 69);
+            for (int q = 0; q < 70; q++) {
+                if (q == a) sb_add(b, "  scale %.17g -0.3 %.17g\n", 0.5 + xu_rng_unit(r), 2 * xu_rng_unit(r) - 1);
+                else if (q == c) sb_add(b, "  translate 0.1 %.17g -0.7\n", xu_rng_unit(r));
+                else if (q % 3 == 0) sb_add(b, "  rotate 0 0 1 90\n");
+                else if (q % 3 == 1) sb_add(b, "  scale -1 1 -1\n");
+                else sb_add(b, "  translate 0x1p-%d 0 -0x1p-%d\n", xu_rng_int(r, 4, 9), xu_rng_int(r, 4, 9));
+            }
+            continue;
+        }
+        int nops = xu_rng_int(r, 65, 90);
+        for (int q = 0; q < nops; q++)
+            switch (xu_rng_int(r, 0, 3)) {
+            case 0: sb_add(b, "  translate 0.1 %.17g -0.3\n", xu_rng_unit(r) - 0.5); break;
+            case 1: sb_add(b, "  rotate 0.2 %.17g 1 %.17g\n", xu_rng_unit(r), 10 * xu_rng_unit(r)); break;
+            case 2: sb_add(b, "  scale 1.1 %.17g 0.9\n", 0.9 + 0.2 * xu_rng_unit(r)); break;
+            default: sb_add(b, "  matrix 1 0.01 0 0.7  0 1 %.17g 0  0 0 1 0.3\n", 0.02 * xu_rng_unit(r));
+            }
+    }
+    for (int l = 0; l < nl; l++) {
+        int n = xu_rng_int(r, 0, nn - 1);
+        double x = xu_rng_unit(r) - 0.5, w = kind == 0 && xu_rng_int(r, 0, 1) ? 1e-9 * xu_rng_unit(r) : 0.0;
+        double y = kind == 2 ? 3 * xu_rng_unit(r) : 0.1, z = kind == 2 ? xu_rng_unit(r) - 0.5 : -0.3;
+        sb_add(b, "box b%d n%d %.17g %.17g %.17g %.17g %.17g %.17g\n", l, kind == 1 ? nn - 1 : n, x, y, z, x + w, y, z);
+    }
+}
+
 /* The level-by-level evaluation (each leaf walked to the root through the
  * kernels, as the tool did before it composed deep chains): quadratic, so
  * for the random deep scenes only.  The tool's boxes must lie inside. */
@@ -414,11 +465,15 @@ static void ref_eval(const scene *s, cbx_box *out)
 static int check_deep(stats *st, long *times_total, int *count, long *same, long *tighter,
                       long *looser_hull, double *worst_hull)
 {
+    /* pm: motion node percentage, or -1 - the gen_tight kind; pb: branch percentage */
     static const struct { int nn, nl, pm, pb, hull, reps; } shape[] = {
         {40, 20, 10, 7, 0, 4},      /* within 64 steps mostly: the level-by-level path */
         {150, 25, 0, 2, 0, 4},      /* no motion: segments only */
         {300, 25, 10, 2, 0, 4},     /* segments and motion nodes */
         {200, 10, 100, 0, 1, 2},    /* a chain of motion nodes: past 128 of them, the world map */
+        {6, 40, -1, 0, 0, 4},       /* gen_tight kind 0: nodes of 65 to 90 operations */
+        {200, 20, -2, 0, 1, 2},     /* gen_tight kind 1: 200 nested moving translations */
+        {3, 100, -3, 0, 0, 6},      /* gen_tight kind 2: nodes of 70 nearly exact operations */
     };
     xu_rng r = {0x5eed5ce7e5ull};
     sbuf b = {NULL, 0, 0};
@@ -426,7 +481,8 @@ static int check_deep(stats *st, long *times_total, int *count, long *same, long
     char name[64], err[512];
     for (size_t k = 0; k < sizeof shape / sizeof shape[0]; k++)
         for (int rep = 0; rep < shape[k].reps; rep++) {
-            gen_deep(&r, &b, shape[k].nn, shape[k].nl, shape[k].pm, shape[k].pb);
+            if (shape[k].pm >= 0) gen_deep(&r, &b, shape[k].nn, shape[k].nl, shape[k].pm, shape[k].pb);
+            else gen_tight(&r, &b, -1 - shape[k].pm, shape[k].nn, shape[k].nl);
             snprintf(name, sizeof name, "deep-%d-%d-%d#%d", shape[k].nn, shape[k].nl, shape[k].pm, rep);
             scene s;
             if (scene_parse(&s, b.p, name, err, sizeof err) != 0) {

@@ -1,16 +1,19 @@
 /*
- * Scene files: parsing and level-by-level evaluation (see scene.h and
+ * Scene files: parsing and evaluation (see scene.h and
  * examples/scene-format.md).
  *
- * Soundness: no matrix is ever multiplied in floating point.  A leaf's
- * bound in its node's coordinates comes from a proven function
- * (cbx_ellipsoid_box for spheres and ellipsoids: exact dual-quadric bound,
- * outward rounded; a box is itself), then every operation of the node, last
- * first, maps the current box with cbx_transform_box_as and the class
- * computed at load time (or cbx_motion_box for a motion node), then the
- * parent's, up to the root.  Each step contains the exact image of the
- * previous box, so the world box contains the exact image of the leaf
- * under the exact product of the given double matrices.
+ * Soundness: no matrix is ever multiplied in round-to-nearest floating
+ * point.  A leaf's bound in its node's coordinates comes from a proven
+ * function (cbx_ellipsoid_box for spheres and ellipsoids: exact
+ * dual-quadric bound, outward rounded; a box is itself), then every
+ * operation of the node, last first, maps the current box with
+ * cbx_transform_box_as and the class computed at load time (or
+ * cbx_motion_box for a motion node), then the parent's, up to the root, or
+ * for a leaf deeper than SC_WALK steps, up to where interval maps composed
+ * with outward rounding take over (see "deep leaves" below).  Each step
+ * contains the exact image of the previous box, so the world box contains
+ * the exact image of the leaf under the exact product of the given double
+ * matrices.
  */
 #include "scene.h"
 
@@ -238,7 +241,7 @@ static int close_node(parser *p)
         int saved = p->line;
         p->line = p->s->nodes[p->cur].line;
         fail(p, "motion node '%s' needs exactly one operation before and one after "
-                "`motion` (it has %d and %d); the tool never composes matrices in floating point",
+                "`motion` (it has %d and %d): M(s) interpolates two given matrices; write one `matrix` per side",
              p->s->nodes[p->cur].name, p->n0, p->n1);
         p->line = saved;
         return -1;
