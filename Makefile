@@ -395,14 +395,25 @@ BENCH_RUN = ./$(B)/bench $(2) -o $(1)/O2 && ./$(B)/bench-native $(2) -o $(1)/nat
 
 bench: check-deps-test
 	@sh scripts/deps.sh bench || echo "bench: note: gnuplot could not be installed; the plot will be skipped"
-	$(MAKE) $(B)/bench $(B)/bench-native
+	$(MAKE) $(B)/bench $(B)/bench-native $(B)/bench_scene $(B)/certbox
 	$(call BENCH_RUN,$(B)/bench-out,$(BENCHARGS))
 	@sh scripts/bench_plot.sh $(B)/bench-out
+	./$(B)/bench_scene $(BENCHSCENEARGS) -o $(B)/bench-out
 
 bench-smoke: check-deps-test
-	$(MAKE) $(B)/bench $(B)/bench-native
+	$(MAKE) $(B)/bench $(B)/bench-native $(B)/bench_scene $(B)/certbox
 	$(call BENCH_RUN,$(B)/bench-smoke,$(BENCHSMOKEARGS))
 	@sh scripts/bench_plot.sh $(B)/bench-smoke
+	./$(B)/bench_scene $(BENCHSCENESMOKE) -o $(B)/bench-smoke
+
+# The scene tool on big generated scenes (issue 18; tests/bench_scene.c):
+# time and peak memory of build/certbox, the scenes written to the output
+# folder and removed after their run (build/bench-out/scene.md)
+BENCHSCENEARGS  := -nodes 1000000 -leaves 1000000
+BENCHSCENESMOKE := -nodes 20000 -leaves 20000
+$(B)/bench_scene: tests/bench_scene.c
+	@mkdir -p $(@D)
+	$(CC) $(ALLCFLAGS) -DBENCH_FLAGS='"$(ALLCFLAGS)"' $< -lm -o $@
 
 # The fast path is branch-free: cbx_fast_box (src/cbx_fast.h), both formats,
 # compiled with the library's flags at -O2 into two wrappers, disassembled;

@@ -15,6 +15,7 @@
  */
 #include <gmp.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -207,15 +208,12 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
 }
 
 static xu_rng rng = {88172645463325252u};
+static int collect_tightness = 1;   /* 0: generated scenes (no tightness figure) */
 
-static int check_file(const char *file, stats *st, long *times_total)
+/* Check a parsed scene (file: its name in messages); frees it. */
+static int check_scene(scene *sp, const char *file, stats *st, long *times_total)
 {
-    scene s;
-    char err[512];
-    if (scene_load(&s, file, err, sizeof err) != 0) {
-        fprintf(stderr, "FAIL %s: %s\n", err, "scene not loaded");
-        return 1;
-    }
+    scene s = *sp;
     scene_eval(&s);
     int has_motion = 0;
     for (int n = 0; n < s.nn; n++) has_motion |= s.nodes[n].motion;
@@ -236,6 +234,10 @@ static int check_file(const char *file, stats *st, long *times_total)
         (*times_total)++;
         for (int l = 0; l < s.nl; l++) {
             const sc_leaf *L = &s.leaves[l];
+            if (l > 0 && L->node == s.leaves[l - 1].node) {    /* the same exact map */
+                check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
+                continue;
+            }
             qm_ident(&W);
             for (int n = L->node; n >= 0; n = s.nodes[n].parent) {   /* W = N o W */
                 node_map(&s, n, tm[n], &N);
@@ -244,7 +246,7 @@ static int check_file(const char *file, stats *st, long *times_total)
                     for (int j = 0; j < 4; j++)
                         mpq_set(W.m[i][j], R.m[i][j]);
             }
-            check_leaf(L, &W, st, file, k == 0 && !has_motion);
+            check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
         }
     }
     st->leaves += s.nl;
@@ -281,6 +283,305 @@ static int check_file(const char *file, stats *st, long *times_total)
     return bad;
 }
 
+static int check_file(const char *file, stats *st, long *times_total)
+{
+    scene s;
+    char err[512];
+    if (scene_load(&s, file, err, sizeof err) != 0) {
+        fprintf(stderr, "FAIL %s: %s\n", err, "scene not loaded");
+        return 1;
+    }
+    return check_scene(&s, file, st, times_total);
+}
+
+/* Parse a scene from text and check it like a file. */
+static int check_text(const char *text, const char *name, stats *st, long *times_total)
+{
+    scene s;
+    char err[512];
+    if (scene_parse(&s, text, name, err, sizeof err) != 0) {
+        fprintf(stderr, "FAIL %s: %s\n", err, "scene not parsed");
+        return 1;
+    }
+    return check_scene(&s, name, st, times_total);
+}
+
+/* A growing text buffer for generated scenes. */
+typedef struct sbuf { char *p; size_t n, cap; } sbuf;
+
+static void sb_add(sbuf *b, const char *fmt, ...)
+{
+    va_list ap;
+    for (;;) {
+        va_start(ap, fmt);
+        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
+        va_end(ap);
+        if (k < 0) { fprintf(stderr, "vsnprintf failed\n"); exit(2); }
+        if (b->p && b->n + (size_t)k < b->cap) { b->n += (size_t)k; return; }
+        b->cap = 2 * (b->cap + (size_t)k + 64);
+        b->p = realloc(b->p, b->cap);
+        if (!b->p) { fprintf(stderr, "out of memory\n"); exit(2); }
+    }
+}
+
+/* A deep random scene: a chain of nn nodes (a branch to a random earlier node with probability pb %), each
+ * with 0 to 3 operations near an isometry (so that 300 levels stay finite)
+ * or a motion node (probability pm %), and nl leaves on nodes near the
+ * bottom and anywhere.  Decimal numbers such as 0.1 are not doubles, so
+ * the matrices are not exact and every rounding path is taken. */
+static void gen_deep(xu_rng *r, sbuf *b, int nn, int nl, int pm, int pb)
+{
+    static const char *deg[] = {"30", "-45", "90", "1e-3", "123.456", "-179.9"};
+    b->n = 0;
+    sb_add(b, "certbox-scene 1\n");
+    for (int i = 0; i < nn; i++) {
+        if (i == 0) sb_add(b, "node n0\n");
+        else sb_add(b, "node n%d n%d\n", i, xu_rng_int(r, 0, 99) >= pb ? i - 1 : xu_rng_int(r, 0, i - 1));
+        int motion = xu_rng_int(r, 0, 99) < pm, nops = motion ? 2 : xu_rng_int(r, 0, 3);
+        for (int q = 0; q < nops; q++) {
+            if (motion && q == 1) sb_add(b, "  motion\n");
+            switch (xu_rng_int(r, 0, 5)) {
+            case 0: case 1:
+                sb_add(b, "  translate %.17g 0.1 %d\n", 20 * xu_rng_unit(r) - 10, xu_rng_int(r, -5, 5));
+                break;
+            case 2:
+                sb_add(b, "  scale %.17g %.17g 0.3\n", xu_rng_sign(r) * (0.8 + 0.45 * xu_rng_unit(r)),
+                       xu_rng_sign(r) * (0.8 + 0.45 * xu_rng_unit(r)));
+                b->n -= 4;      /* "0.3\n" -> a factor near 1 */
+                sb_add(b, "%s\n", xu_rng_int(r, 0, 1) ? "1.1" : "-0.9");
+                break;
+            case 3: case 4:
+                sb_add(b, "  rotate %.17g %.17g 0.25 %s\n", xu_rng_unit(r) - 0.5, xu_rng_unit(r), deg[xu_rng_int(r, 0, 5)]);
+                break;
+            default:
+                sb_add(b, "  matrix 1 0.1 %.17g 3  -0.05 1 0 0.1  0 %.17g 0.99 -2\n", 0.2 * xu_rng_unit(r) - 0.1,
+                       0.1 * xu_rng_unit(r));
+            }
+        }
+    }
+    for (int l = 0; l < nl; l++) {
+        int n = xu_rng_int(r, 0, 1) ? nn - 1 - xu_rng_int(r, 0, nn < 5 ? nn - 1 : 4) : xu_rng_int(r, 0, nn - 1);
+        double x = 10 * xu_rng_unit(r) - 5;
+        switch (xu_rng_int(r, 0, 2)) {
+        case 0: sb_add(b, "box b%d n%d %.17g -1 0.1 %.17g 0.5 0.7\n", l, n, x, x + 3 * xu_rng_unit(r)); break;
+        case 1: sb_add(b, "sphere b%d n%d %.17g 0.1 -2 %.17g\n", l, n, x, 2 * xu_rng_unit(r)); break;
+        default: sb_add(b, "ellipsoid b%d n%d 0.1 %.17g 1 0.5 0.2 %.17g 0.6 -0.8 0 0.8 0.6 0 0 0 1\n", l, n, x,
+                        xu_rng_unit(r));
+        }
+    }
+}
+
+/* Scenes where the composed maps are the whole bound, so that a wrong
+ * rounding direction shows: kind 0, a chain of nn nodes with 65 to 90
+ * operations each (more than a leaf's 64 level-by-level steps, so its leaves
+ * go straight to the interval maps) and point or thin box leaves; kind 1, a
+ * chain of nn motion nodes, each a translation moving by 0.001 to 0.01
+ * (past 128 of them: the world map with the hull of M0 and M1); kind 2,
+ * nodes of 70 operations that are exact in doubles (small power-of-two
+ * translations, signed permutations) but for a scale and a translation
+ * by decimals, and
+ * point leaves: the result is a few units in the last place wide, so a
+ * product or sum rounded the wrong way fails the exact check. */
+static void gen_tight(xu_rng *r, sbuf *b, int kind, int nn, int nl)
+{
+    b->n = 0;
+    sb_add(b, "certbox-scene 1\n");
+    for (int i = 0; i < nn; i++) {
+        if (i == 0) sb_add(b, "node n0\n");
+        else sb_add(b, "node n%d n%d\n", i, i - 1);
+        if (kind == 1) {
+            sb_add(b, "  translate 0.1 %.17g 0\n  motion\n  translate %.17g 0.1 0.3\n",
+                   0.01 * xu_rng_unit(r), 0.001 + 0.01 * xu_rng_unit(r));
+            continue;
+        }
+        if (kind == 2) {
+            int a = xu_rng_int(r, 0, 69), c = xu_rng_int(r, 0, 69);
+            for (int q = 0; q < 70; q++) {
+                if (q == a) sb_add(b, "  scale %.17g -0.3 %.17g\n", 0.5 + xu_rng_unit(r), 2 * xu_rng_unit(r) - 1);
+                else if (q == c) sb_add(b, "  translate 0.1 %.17g -0.7\n", xu_rng_unit(r));
+                else if (q % 3 == 0) sb_add(b, "  rotate 0 0 1 90\n");
+                else if (q % 3 == 1) sb_add(b, "  scale -1 1 -1\n");
+                else sb_add(b, "  translate 0x1p-%d 0 -0x1p-%d\n", xu_rng_int(r, 4, 9), xu_rng_int(r, 4, 9));
+            }
+            continue;
+        }
+        int nops = xu_rng_int(r, 65, 90);
+        for (int q = 0; q < nops; q++)
+            switch (xu_rng_int(r, 0, 3)) {
+            case 0: sb_add(b, "  translate 0.1 %.17g -0.3\n", xu_rng_unit(r) - 0.5); break;
+            case 1: sb_add(b, "  rotate 0.2 %.17g 1 %.17g\n", xu_rng_unit(r), 10 * xu_rng_unit(r)); break;
+            case 2: sb_add(b, "  scale 1.1 %.17g 0.9\n", 0.9 + 0.2 * xu_rng_unit(r)); break;
+            default: sb_add(b, "  matrix 1 0.01 0 0.7  0 1 %.17g 0  0 0 1 0.3\n", 0.02 * xu_rng_unit(r));
+            }
+    }
+    for (int l = 0; l < nl; l++) {
+        int n = xu_rng_int(r, 0, nn - 1);
+        double x = xu_rng_unit(r) - 0.5, w = kind == 0 && xu_rng_int(r, 0, 1) ? 1e-9 * xu_rng_unit(r) : 0.0;
+        double y = kind == 2 ? 3 * xu_rng_unit(r) : 0.1, z = kind == 2 ? xu_rng_unit(r) - 0.5 : -0.3;
+        sb_add(b, "box b%d n%d %.17g %.17g %.17g %.17g %.17g %.17g\n", l, kind == 1 ? nn - 1 : n, x, y, z, x + w, y, z);
+    }
+}
+
+/* The level-by-level evaluation (each leaf walked to the root through the
+ * kernels, as the tool did before it composed deep chains): quadratic, so
+ * for the random deep scenes only.  The tool's boxes must lie inside. */
+static void ref_eval(const scene *s, cbx_box *out)
+{
+    for (int k = 0; k < s->nl; k++) {
+        const sc_leaf *L = &s->leaves[k];
+        cbx_box b;
+        if (L->kind == SC_BOX) {
+            for (int j = 0; j < 3; j++) { b.lo[j] = L->v[j]; b.hi[j] = L->v[3 + j]; }
+        } else {
+            double c[3], rr[3], R[3][3];
+            for (int j = 0; j < 3; j++) c[j] = L->v[j];
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    R[i][j] = L->kind == SC_SPHERE ? i == j : L->v[6 + 3 * i + j];
+            for (int j = 0; j < 3; j++) rr[j] = L->kind == SC_SPHERE ? L->v[3] : L->v[3 + j];
+            (void)cbx_ellipsoid_box(c, rr, (const double (*)[3])R, &b);
+        }
+        for (int n = L->node; n >= 0; n = s->nodes[n].parent) {
+            const sc_node *N = &s->nodes[n];
+            if (N->motion) {
+                cbx_box o;
+                (void)cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, &b, &o);
+                b = o;
+            } else {
+                for (int q = N->first + N->n - 1; q >= N->first; q--)
+                    (void)cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, &b, &b);
+            }
+        }
+        out[k] = b;
+    }
+}
+
+/* Deep scenes: beyond 64 kernel steps a leaf goes on by composed segment
+ * maps (and past 64 more motion nodes by a world map).  Each scene: the
+ * exact check, and each box against the level-by-level one: identical,
+ * tighter, or looser.  Looser fails, except past 128 nested motion nodes
+ * (the world map's hull of M0 and M1, the price of linear time there:
+ * counted and its largest width ratio printed). */
+static int check_deep(stats *st, long *times_total, int *count, long *same, long *tighter,
+                      long *looser_hull, double *worst_hull)
+{
+    /* pm: motion node percentage, or -1 - the gen_tight kind; pb: branch percentage */
+    static const struct { int nn, nl, pm, pb, hull, reps; } shape[] = {
+        {40, 20, 10, 7, 0, 4},      /* within 64 steps mostly: the level-by-level path */
+        {150, 25, 0, 2, 0, 4},      /* no motion: segments only */
+        {300, 25, 10, 2, 0, 4},     /* segments and motion nodes */
+        {200, 10, 100, 0, 1, 2},    /* a chain of motion nodes: past 128 of them, the world map */
+        {6, 40, -1, 0, 0, 4},       /* gen_tight kind 0: nodes of 65 to 90 operations */
+        {200, 20, -2, 0, 1, 2},     /* gen_tight kind 1: 200 nested moving translations */
+        {3, 100, -3, 0, 0, 6},      /* gen_tight kind 2: nodes of 70 nearly exact operations */
+    };
+    xu_rng r = {0x5eed5ce7e5ull};
+    sbuf b = {NULL, 0, 0};
+    int fails = 0;
+    char name[64], err[512];
+    for (size_t k = 0; k < sizeof shape / sizeof shape[0]; k++)
+        for (int rep = 0; rep < shape[k].reps; rep++) {
+            if (shape[k].pm >= 0) gen_deep(&r, &b, shape[k].nn, shape[k].nl, shape[k].pm, shape[k].pb);
+            else gen_tight(&r, &b, -1 - shape[k].pm, shape[k].nn, shape[k].nl);
+            snprintf(name, sizeof name, "deep-%d-%d-%d#%d", shape[k].nn, shape[k].nl, shape[k].pm, rep);
+            scene s;
+            if (scene_parse(&s, b.p, name, err, sizeof err) != 0) {
+                fprintf(stderr, "FAIL %s\n", err);
+                fails++;
+                continue;
+            }
+            scene_eval(&s);
+            cbx_box *ref = malloc((size_t)s.nl * sizeof *ref);
+            if (!ref) { fprintf(stderr, "out of memory\n"); exit(2); }
+            ref_eval(&s, ref);
+            for (int l = 0; l < s.nl; l++)
+                for (int j = 0; j < 3; j++) {
+                    double lo = s.leaves[l].world.lo[j], hi = s.leaves[l].world.hi[j];
+                    if (lo == ref[l].lo[j] && hi == ref[l].hi[j]) (*same)++;
+                    else if (lo >= ref[l].lo[j] && hi <= ref[l].hi[j]) (*tighter)++;
+                    else if (shape[k].hull) {
+                        double w = (hi - lo) / (ref[l].hi[j] - ref[l].lo[j]);
+                        (*looser_hull)++;
+                        if (w > *worst_hull) *worst_hull = w;
+                    } else {
+                        fprintf(stderr, "FAIL %s: leaf %s axis %d [%a, %a] looser than level by level [%a, %a]\n",
+                                name, s.leaves[l].name, j, lo, hi, ref[l].lo[j], ref[l].hi[j]);
+                        fails++;
+                    }
+                }
+            free(ref);
+            fails += check_scene(&s, name, st, times_total);
+            (*count)++;
+        }
+    free(b.p);
+    return fails;
+}
+
+/* Linear time: the chain of issue 18 (100,000 nodes of translate 1 0 0,
+ * 10,000 boxes on the deepest node) took 31 s; it must now simply finish
+ * (the time is the bench's business) with every box exactly checked. */
+static int check_long_chain(stats *st, long *times_total, int nodes, int leaves)
+{
+    sbuf b = {NULL, 0, 0};
+    sb_add(&b, "certbox-scene 1\nnode n0\n  translate 1 0 0\n");
+    for (int i = 1; i < nodes; i++)
+        sb_add(&b, "node n%d n%d\n  translate 1 0 0\n", i, i - 1);
+    for (int k = 0; k < leaves; k++)
+        sb_add(&b, "box b%d n%d %d 0 0 %d 1 1\n", k, nodes - 1, k, k + 1);
+    long c0 = st->checks;
+    int fails = check_text(b.p, "chain", st, times_total);
+    printf("test_scene: linear time: a %d-node chain of `translate 1 0 0` with %d boxes on its deepest node "
+           "evaluated, %ld exact checks, %d failed\n", nodes, leaves, st->checks - c0, fails);
+    free(b.p);
+    return fails;
+}
+
+/* Tiny and huge rotation axes act like the same axis at normal scale: an
+ * axis scaled by a power of two gives the same matrix, bit for bit (it was
+ * a non-rotation for 2e-162 0 2e-162 and NaN for 1e-170 0 0), and the
+ * leaf's box passes the exact containment check. */
+static int check_axes(stats *st, long *times_total, int *count)
+{
+    static const struct { const char *axis, *ref; } ax[] = {
+        {"2e-162 0 2e-162", "1 0 1"},
+        {"1e-170 0 0", "1 0 0"},
+        {"1e300 0 1e300", "1 0 1"},
+        {"0 -0x1p-1074 0", "0 -1 0"},
+        {"0x1.8p-900 0x1p-899 0", "3 4 0"},
+        {"0x1.8p+900 0x1p+901 0", "3 4 0"},
+        {"-0x1p-1060 0x1p-1060 0x1p-1061", "-2 2 1"},
+    };
+    static const char *deg[] = {"30", "-17.5", "90", "1e-300", "123456.789"};
+    int fails = 0;
+    char text[2][256], err[512];
+    for (size_t k = 0; k < sizeof ax / sizeof ax[0]; k++)
+        for (size_t d = 0; d < sizeof deg / sizeof deg[0]; d++) {
+            scene s[2];
+            int ok = 1;
+            for (int r = 0; r < 2; r++) {
+                snprintf(text[r], sizeof text[r], "certbox-scene 1\nnode a\n  rotate %s %s\nbox b a -1 0.5 2 3 4 5.25\n",
+                         r ? ax[k].ref : ax[k].axis, deg[d]);
+                if (scene_parse(&s[r], text[r], "axis.scene", err, sizeof err) != 0) {
+                    fprintf(stderr, "FAIL axis %s: %s\n", r ? ax[k].ref : ax[k].axis, err);
+                    return fails + 1;
+                }
+                scene_eval(&s[r]);
+            }
+            ok = memcmp(&s[0].ops[0].a, &s[1].ops[0].a, sizeof s[0].ops[0].a) == 0
+                 && memcmp(&s[0].leaves[0].world, &s[1].leaves[0].world, sizeof s[0].leaves[0].world) == 0
+                 && s[0].leaves[0].st == CBX_OK;
+            if (!ok) {
+                fprintf(stderr, "FAIL rotate %s %s: not the matrix and box of rotate %s %s\n",
+                        ax[k].axis, deg[d], ax[k].ref, deg[d]);
+                fails++;
+            }
+            scene_free(&s[1]);
+            fails += check_scene(&s[0], text[0], st, times_total);
+            (*count)++;
+        }
+    return fails;
+}
+
 static int cmp_d(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;
@@ -306,6 +607,7 @@ static int check_errors(int *count)
         {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 nan\n", 3},
         {"certbox-scene 1\nnode a\nsphere b a 0 0 0 -1\n", 3},
         {"certbox-scene 1\nnode a\n  rotate 0 0 0 30\nbox b a 0 0 0 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a\n  rotate 1 0 0 1e15\nbox b a 0 0 0 1 1 1\n", 3},
         {"certbox-scene 1\nnode a\n  translate 1 0 0\n  translate 1 0 0\n  motion\n  translate 2 0 0\nbox b a 0 0 0 1 1 1\n", 2},
         {"certbox-scene 1\nnode a\n  motion\n  motion\nbox b a 0 0 0 1 1 1\n", 4},
         {"certbox-scene 1\ntranslate 1 0 0\n", 2},
@@ -349,6 +651,23 @@ static int check_errors(int *count)
     }
     free(t);
     (*count)++;
+    /* a NUL byte is refused naming its line and column (it was "FILE:0:") */
+#define NUL_CASE(text, want) {text, sizeof text - 1, want}
+    static const struct { const char *text; size_t n; const char *want; } nul[] = {
+        NUL_CASE("certbox-scene 1\nnode a\nbox b a\0 0 0 0 1 1 1\n", "t.scene:3: the file contains a NUL byte (column 8)"),
+        NUL_CASE("\0certbox-scene 1\n", "t.scene:1: the file contains a NUL byte (column 1)"),
+        NUL_CASE("certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 1\n\0", "t.scene:4: the file contains a NUL byte (column 1)"),
+    };
+#undef NUL_CASE
+    for (size_t k = 0; k < sizeof nul / sizeof nul[0]; k++) {
+        err[0] = '\0';
+        if (scene_parse_buf(&s, nul[k].text, nul[k].n, "t.scene", err, sizeof err) == 0
+            || strcmp(err, nul[k].want) != 0) {
+            fprintf(stderr, "FAIL NUL case %zu: '%s', expected '%s'\n", k, err, nul[k].want);
+            fails++;
+        }
+        (*count)++;
+    }
     return fails;
 }
 
@@ -366,24 +685,43 @@ int main(int argc, char **argv)
         bad |= check_file(argv[k], &st, &times);
     int nerr = 0;
     int efails = check_errors(&nerr);
+    /* generated scenes: exact checks, but no tightness figure (that one is
+     * the example files') */
+    collect_tightness = 0;
+    int naxes = 0, ndeep = 0;
+    long checks0 = st.checks, dsame = 0, dtight = 0, dhull = 0;
+    double whull = 0;
+    int afails = check_axes(&st, &times, &naxes);
+    printf("test_scene: %d tiny/huge rotation axes (7 axes x 5 angles) the same matrix and box as the axis "
+           "at normal scale, %ld exact checks, %d failed\n", naxes, st.checks - checks0, afails);
+    checks0 = st.checks;
+    int dfails = check_deep(&st, &times, &ndeep, &dsame, &dtight, &dhull, &whull);
+    printf("test_scene: %d deep random scenes (up to 300 nodes, motion nodes; past 64 steps composed), "
+           "%ld exact checks, %d failed; against level by level: %ld axes identical, %ld tighter, "
+           "%ld looser past 128 nested motion nodes (width up to %.3g times)\n",
+           ndeep, st.checks - checks0, dfails, dsame, dtight, dhull, whull);
+    int cfails = check_long_chain(&st, &times, 100000, 10000);
+    int ngen = naxes + ndeep + 1, gfails = afails + dfails + cfails;
     double mx = 0, med = 0;
     if (st.ratios_n) {
         qsort(st.ratios, (size_t)st.ratios_n, sizeof *st.ratios, cmp_d);
         mx = st.ratios[st.ratios_n - 1];
         med = st.ratios[st.ratios_n / 2];
     }
-    printf("test_scene: %d files, %ld leaves, %ld scene evaluations at sampled times, "
+    printf("test_scene: %d files and %d generated scenes, %ld leaves, %ld scene evaluations at sampled times, "
            "%ld exact containment checks, %ld failures\n",
-           argc - 1, st.leaves, times, st.checks, st.fails);
+           argc - 1, ngen, st.leaves, times, st.checks, st.fails);
     printf("  check containment %ld leaf-axes checked, %ld failed\n", st.checks, st.fails);
     printf("test_scene: tightness (world width / exact width, static scenes, %ld axes): "
            "max %.6f median %.9f\n", st.ratios_n, mx, med);
-    printf("test_scene: %d broken scenes, %d not rejected at the right line\n", nerr, efails);
+    printf("test_scene: %d broken scenes (3 of them with a NUL byte: line and column named), "
+           "%d not rejected at the right line\n", nerr, efails);
     free(st.ratios);
-    int failed = bad || st.fails || efails || st.checks == 0;
+    int failed = bad || st.fails || efails || gfails || st.checks == 0;
     printf("%s\n", failed ? "test_scene: FAILED" : "test_scene: passed");
-    /* the closing line CI reads: one item per exact check and broken file */
-    long items = st.checks + nerr + (argc - 1), nfail = st.fails + efails + bad + (st.checks == 0);
+    /* the closing line CI reads: one item per exact check, broken file and generated scene */
+    long items = st.checks + nerr + ngen + (argc - 1);
+    long nfail = st.fails + efails + gfails + bad + (st.checks == 0);
     printf("%ld passed, %ld failed\n", items - nfail, nfail);
     return failed ? 1 : 0;
 }

@@ -1,16 +1,19 @@
 /*
- * Scene files: parsing and level-by-level evaluation (see scene.h and
+ * Scene files: parsing and evaluation (see scene.h and
  * examples/scene-format.md).
  *
- * Soundness: no matrix is ever multiplied in floating point.  A leaf's
- * bound in its node's coordinates comes from a proven function
- * (cbx_ellipsoid_box for spheres and ellipsoids: exact dual-quadric bound,
- * outward rounded; a box is itself), then every operation of the node, last
- * first, maps the current box with cbx_transform_box_as and the class
- * computed at load time (or cbx_motion_box for a motion node), then the
- * parent's, up to the root.  Each step contains the exact image of the
- * previous box, so the world box contains the exact image of the leaf
- * under the exact product of the given double matrices.
+ * Soundness: no matrix is ever multiplied in round-to-nearest floating
+ * point.  A leaf's bound in its node's coordinates comes from a proven
+ * function (cbx_ellipsoid_box for spheres and ellipsoids: exact
+ * dual-quadric bound, outward rounded; a box is itself), then every
+ * operation of the node, last first, maps the current box with
+ * cbx_transform_box_as and the class computed at load time (or
+ * cbx_motion_box for a motion node), then the parent's, up to the root, or
+ * for a leaf deeper than SC_WALK steps, up to where interval maps composed
+ * with outward rounding take over (see "deep leaves" below).  Each step
+ * contains the exact image of the previous box, so the world box contains
+ * the exact image of the leaf under the exact product of the given double
+ * matrices.
  */
 #include "scene.h"
 
@@ -193,6 +196,14 @@ static void rotation(double x, double y, double z, double deg, double r[3][3])
         n[1] = y > 0 ? 1.0 : y < 0 ? -1.0 : 0.0;
         n[2] = z > 0 ? 1.0 : z < 0 ? -1.0 : 0.0;
     } else {
+        /* Scale the axis by a power of two (exact) so that its largest
+         * component lies in [0.5, 1): x*x can then neither overflow nor
+         * underflow to nothing (2e-162 squared did, and gave a non-rotation;
+         * 1e-170 gave 0/0).  The same bits as unscaled for every axis whose
+         * squares were in range: scaling by 2^k commutes with each rounding. */
+        int e;
+        (void)frexp(fmax(fabs(x), fmax(fabs(y), fabs(z))), &e);
+        x = ldexp(x, -e); y = ldexp(y, -e); z = ldexp(z, -e);
         double len = sqrt(x * x + y * y + z * z);
         n[0] = x / len; n[1] = y / len; n[2] = z / len;
         double t = deg * (SC_PI / 180.0);
@@ -230,7 +241,7 @@ static int close_node(parser *p)
         int saved = p->line;
         p->line = p->s->nodes[p->cur].line;
         fail(p, "motion node '%s' needs exactly one operation before and one after "
-                "`motion` (it has %d and %d); the tool never composes matrices in floating point",
+                "`motion` (it has %d and %d): M(s) interpolates two given matrices; write one `matrix` per side",
              p->s->nodes[p->cur].name, p->n0, p->n1);
         p->line = saved;
         return -1;
@@ -293,8 +304,8 @@ static int statement(parser *p, char **tok, int nt)
             return -1;
         if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0)
             return fail(p, "rotation axis is zero");
-        if (!(fabs(v[0]) < 1e150 && fabs(v[1]) < 1e150 && fabs(v[2]) < 1e150 && fabs(v[3]) < 1e15))
-            return fail(p, "rotation axis or angle too large");
+        if (!(fabs(v[3]) < 1e15))   /* beyond, DEG * pi / 180 has no meaningful fraction of a turn */
+            return fail(p, "rotation angle too large (|DEGREES| must be below 1e15)");
         rotation(v[0], v[1], v[2], v[3], r);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++)
@@ -430,6 +441,23 @@ bad:
     return -1;
 }
 
+int scene_parse_buf(scene *s, const char *text, size_t n, const char *file, char *err, size_t errlen)
+{
+    const char *nul = memchr(text, '\0', n);
+    if (nul) {
+        /* name the line (and column) of the first NUL, counted as the parser counts */
+        long line = 1, col = 1;
+        for (const char *c = text; c < nul; c++) {
+            if (*c == '\n') { line++; col = 1; }
+            else col++;
+        }
+        memset(s, 0, sizeof *s);
+        snprintf(err, errlen, "%s:%ld: the file contains a NUL byte (column %ld)", file, line, col);
+        return -1;
+    }
+    return scene_parse(s, text, file, err, errlen);
+}
+
 int scene_load(scene *s, const char *path, char *err, size_t errlen)
 {
     FILE *f = fopen(path, "rb");
@@ -458,12 +486,7 @@ int scene_load(scene *s, const char *path, char *err, size_t errlen)
         return -1;
     }
     text[n] = '\0';
-    if (strlen(text) != n) {
-        free(text);
-        snprintf(err, errlen, "%s:0: the file contains a NUL byte", path);
-        return -1;
-    }
-    int rc = scene_parse(s, text, path, err, errlen);
+    int rc = scene_parse_buf(s, text, n, path, err, errlen);
     free(text);
     return rc;
 }
@@ -500,6 +523,234 @@ static cbx_status leaf_box(const sc_leaf *L, cbx_box *b)
     return cbx_ellipsoid_box(c, r, (const double (*)[3])R, b);
 }
 
+/* ---- deep leaves: interval maps, composed once per node -----------------
+ * Walking every leaf up to the root costs leaves x depth (a 100,000-node
+ * chain with 10,000 leaves took 31 s).  So a leaf walks at most SC_WALK
+ * kernel steps (an operation, or a motion node; a node without operations
+ * counts one) with the proven kernels as above, which is the whole way up
+ * for every leaf within SC_WALK steps of the root: those boxes are
+ * bit-identical to the level-by-level ones.  A deeper leaf stops at a node
+ * and goes on by segments: S_n, an interval affine map that contains the
+ * exact product of the given matrices from n up to its nearest motion
+ * ancestor (excluded) or the root, computed once per node (parents come
+ * first in the node array) as S_parent x O1 x ... x Ok in interval
+ * arithmetic rounded outward; then the motion node by cbx_motion_box as
+ * above, then the segment above it.  Past SC_WALK motion nodes a leaf
+ * applies F_m, the whole world map of motion node m, where m's operation is
+ * the entry-wise hull of M0 and M1: it holds (1 - s) M0 + s M1 for every s
+ * in [0, 1], but it forgets that the entries move together, so it is used
+ * only there.  Inclusion monotonicity of interval arithmetic puts the exact
+ * image of the box inside each result.  The composition is not a proven
+ * kernel: its rounding is argued here and checked by tests/test_scene.c
+ * against exact rationals. */
+#ifndef SC_WALK
+#define SC_WALK 64
+#endif
+
+typedef struct sc_imap { double lo[3][4], hi[3][4]; } sc_imap;
+
+/* Every composed entry, product and box end is kept at most 2^1000 in
+ * magnitude, so no product of two in-range values overflows a sum, and
+ * TwoSum is exact; beyond, the axis becomes [-inf, +inf] (CBX_ERANGE). */
+static const double SC_BIG = 0x1p1000;
+
+static int in_range(double x) { return fabs(x) <= SC_BIG; }   /* false for NaN */
+
+/* x * y rounded down (up = 0) or up (up = 1): the rounded-to-nearest
+ * product, moved one step when its exact error (fma, exact when the
+ * product is at least 2^-960 in magnitude) points that way; a smaller
+ * nonzero product is moved one step outward regardless. */
+static double mul_dir(double x, double y, int up)
+{
+    if (x == 0.0 || y == 0.0)
+        return 0.0;
+    double p = x * y, to = up ? HUGE_VAL : -HUGE_VAL;
+    if (!(fabs(p) >= 0x1p-960))
+        return nextafter(p, to);
+    double e = fma(x, y, -p);
+    return (up ? e > 0.0 : e < 0.0) ? nextafter(p, to) : p;
+}
+
+/* x + y rounded down or up: TwoSum's exact error (|x|, |y| <= 2^1001). */
+static double add_dir(double x, double y, int up)
+{
+    double s = x + y, b = s - x, e = (x - (s - b)) + (y - b);
+    return (up ? e > 0.0 : e < 0.0) ? nextafter(s, up ? HUGE_VAL : -HUGE_VAL) : s;
+}
+
+/* [rl, rh] += [al, ah] * [bl, bh]; 0 when either factor is exactly [0, 0]
+ * (so an infinite box end times a zero entry stays out of the sum).
+ * Returns 0, or -1 when some value leaves the range. */
+static int imul_add(double al, double ah, double bl, double bh, double *rl, double *rh)
+{
+    if ((al == 0.0 && ah == 0.0) || (bl == 0.0 && bh == 0.0))
+        return 0;
+    if (!(in_range(al) && in_range(ah) && in_range(bl) && in_range(bh)))
+        return -1;
+    double lo, hi;
+    if (bl == bh) {                       /* a point factor: two products */
+        lo = mul_dir(bl >= 0.0 ? al : ah, bl, 0);
+        hi = mul_dir(bl >= 0.0 ? ah : al, bl, 1);
+    } else {
+        lo = fmin(fmin(mul_dir(al, bl, 0), mul_dir(al, bh, 0)), fmin(mul_dir(ah, bl, 0), mul_dir(ah, bh, 0)));
+        hi = fmax(fmax(mul_dir(al, bl, 1), mul_dir(al, bh, 1)), fmax(mul_dir(ah, bl, 1), mul_dir(ah, bh, 1)));
+    }
+    if (!(in_range(lo) && in_range(hi)))
+        return -1;
+    *rl = add_dir(*rl, lo, 0);
+    *rh = add_dir(*rh, hi, 1);
+    return in_range(*rl) && in_range(*rh) ? 0 : -1;
+}
+
+/* r = w x o as affine maps (o applied first); r may not alias w or o.
+ * Returns -1 when some entry leaves the range. */
+static int imap_compose(const sc_imap *w, const sc_imap *o, sc_imap *r)
+{
+    int bad = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            double lo = j == 3 ? w->lo[i][3] : 0.0, hi = j == 3 ? w->hi[i][3] : 0.0;
+            for (int k = 0; k < 3; k++)
+                bad |= imul_add(w->lo[i][k], w->hi[i][k], o->lo[k][j], o->hi[k][j], &lo, &hi);
+            r->lo[i][j] = lo;
+            r->hi[i][j] = hi;
+        }
+    return bad ? -1 : 0;
+}
+
+/* The hull of two given maps (one map: a0 == a1). */
+static void imap_hull(const cbx_affine *a0, const cbx_affine *a1, sc_imap *r)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            r->lo[i][j] = fmin(a0->m[i][j], a1->m[i][j]);
+            r->hi[i][j] = fmax(a0->m[i][j], a1->m[i][j]);
+        }
+}
+
+/* The segment and world maps (see above), parents first. */
+typedef struct sc_maps {
+    sc_imap *S, *F;         /* S[n] for every node; F[fidx[n]] for motion nodes */
+    unsigned char *sbad, *fbad;   /* 1: the map left the range (CBX_ERANGE) */
+    int *mot, *fidx;        /* mot[n]: the nearest motion node among n and its ancestors, or -1 */
+} sc_maps;
+
+static void identity_map(sc_imap *r)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            r->lo[i][j] = r->hi[i][j] = i == j;
+}
+
+static void maps_free(sc_maps *m)
+{
+    free(m->S); free(m->F); free(m->sbad); free(m->fbad); free(m->mot); free(m->fidx);
+    memset(m, 0, sizeof *m);
+}
+
+/* Compute every map; -1 when out of memory (nothing kept). */
+static int maps_build(const scene *s, sc_maps *m)
+{
+    size_t nn = (size_t)s->nn, nm = 0;
+    for (int n = 0; n < s->nn; n++) nm += s->nodes[n].motion != 0;
+    memset(m, 0, sizeof *m);
+    m->S = malloc(nn * sizeof *m->S);
+    m->sbad = malloc(nn);
+    m->mot = malloc(nn * sizeof *m->mot);
+    m->fidx = malloc(nn * sizeof *m->fidx);
+    m->F = malloc((nm ? nm : 1) * sizeof *m->F);
+    m->fbad = malloc(nm ? nm : 1);
+    if (!m->S || !m->sbad || !m->mot || !m->fidx || !m->F || !m->fbad) {
+        maps_free(m);
+        return -1;
+    }
+    int nf = 0;
+    for (int n = 0; n < s->nn; n++) {
+        const sc_node *N = &s->nodes[n];
+        int p = N->parent, bad = 0;
+        sc_imap cur, o, r;
+        m->mot[n] = N->motion ? n : p >= 0 ? m->mot[p] : -1;
+        m->fidx[n] = -1;
+        if (!N->motion) {
+            /* S_n = S_parent (if the parent is no motion node) x O1 x ... x Ok */
+            if (p >= 0 && !s->nodes[p].motion) { cur = m->S[p]; bad = m->sbad[p]; }
+            else identity_map(&cur);
+            for (int q = N->first; q < N->first + N->n && !bad; q++) {
+                imap_hull(&s->ops[q].a, &s->ops[q].a, &o);
+                bad = imap_compose(&cur, &o, &r) != 0;
+                cur = r;
+            }
+            m->S[n] = cur;
+            m->sbad[n] = (unsigned char)bad;
+        } else {
+            /* F_n = the parent's world map x hull(M0, M1); the parent's world
+             * map is F of its motion node x its segment map */
+            if (p < 0) identity_map(&cur);
+            else if (s->nodes[p].motion) { cur = m->F[m->fidx[p]]; bad = m->fbad[m->fidx[p]]; }
+            else if (m->mot[p] < 0) { cur = m->S[p]; bad = m->sbad[p]; }
+            else {
+                int f = m->fidx[m->mot[p]];
+                bad = m->fbad[f] || m->sbad[p] || imap_compose(&m->F[f], &m->S[p], &cur) != 0;
+            }
+            imap_hull(&s->ops[N->first].a, &s->ops[N->first + 1].a, &o);
+            bad = bad || imap_compose(&cur, &o, &r) != 0;
+            m->fidx[n] = nf;
+            m->F[nf] = r;
+            m->fbad[nf++] = (unsigned char)bad;
+            identity_map(&m->S[n]);     /* not used */
+            m->sbad[n] = 0;
+        }
+    }
+    return 0;
+}
+
+/* out = the hull of W applied to the box in (out may be in).  An axis that
+ * leaves the range, or a map that did, is [-inf, +inf] with CBX_ERANGE. */
+static cbx_status imap_box(const sc_imap *w, int wbad, const cbx_box *in, cbx_box *out)
+{
+    cbx_box b = *in;
+    cbx_status st = CBX_OK;
+    for (int j = 0; j < 3; j++)
+        if (isnan(b.lo[j]) || isnan(b.hi[j]))
+            wbad = 1, st = CBX_EINVAL;
+    for (int i = 0; i < 3; i++) {
+        double lo = w->lo[i][3], hi = w->hi[i][3];
+        int bad = wbad;
+        for (int k = 0; k < 3 && !bad; k++)
+            bad = imul_add(w->lo[i][k], w->hi[i][k], b.lo[k], b.hi[k], &lo, &hi) != 0;
+        if (bad) {
+            lo = -HUGE_VAL;
+            hi = HUGE_VAL;
+            if (st == CBX_OK) st = CBX_ERANGE;
+        }
+        out->lo[i] = lo;
+        out->hi[i] = hi;
+    }
+    return st;
+}
+
+/* ---- evaluation ------------------------------------------------------------ */
+/* The kernel steps of a node in a leaf's walk (at least one per node). */
+static int walk_cost(const sc_node *N)
+{
+    return N->motion ? 1 : N->n > 0 ? N->n : 1;
+}
+
+/* The box through one node's own operations, last first (level by level). */
+static cbx_status node_box(const scene *s, const sc_node *N, cbx_box *b)
+{
+    cbx_status st = CBX_OK;
+    if (N->motion) {
+        cbx_box o;
+        worse(&st, cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, b, &o));
+        *b = o;
+    } else {
+        for (int q = N->first + N->n - 1; q >= N->first; q--)
+            worse(&st, cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, b, b));
+    }
+    return st;
+}
+
 void scene_eval(scene *s)
 {
     s->st = CBX_OK;
@@ -507,19 +758,43 @@ void scene_eval(scene *s)
         s->world.lo[j] = HUGE_VAL;
         s->world.hi[j] = -HUGE_VAL;
     }
+    /* the maps only when some leaf is more than SC_WALK steps deep */
+    sc_maps m;
+    int have_maps = 0;
+    int *depth = malloc((size_t)(s->nn > 0 ? s->nn : 1) * sizeof *depth);
+    int deep = depth == NULL;
+    for (int n = 0; n < s->nn && depth; n++) {
+        const sc_node *N = &s->nodes[n];
+        depth[n] = walk_cost(N) + (N->parent >= 0 ? depth[N->parent] : 0);
+    }
+    for (int k = 0; k < s->nl && !deep; k++)
+        deep = depth[s->leaves[k].node] > SC_WALK;
+    free(depth);
+    /* out of memory: every leaf walks to the root (slow, the same promise) */
+    if (deep)
+        have_maps = maps_build(s, &m) == 0;
     for (int k = 0; k < s->nl; k++) {
         sc_leaf *L = &s->leaves[k];
         cbx_box b;
         cbx_status st = leaf_box(L, &b);
-        for (int n = L->node; n >= 0; n = s->nodes[n].parent) {
+        int n = L->node, budget = SC_WALK;
+        while (n >= 0 && (!have_maps || walk_cost(&s->nodes[n]) <= budget)) {
+            budget -= walk_cost(&s->nodes[n]);
+            worse(&st, node_box(s, &s->nodes[n], &b));
+            n = s->nodes[n].parent;
+        }
+        /* then by segments, motion nodes by cbx_motion_box (at most SC_WALK) */
+        for (int motions = 0; n >= 0; ) {
             const sc_node *N = &s->nodes[n];
-            if (N->motion) {
-                cbx_box o;
-                worse(&st, cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, &b, &o));
-                b = o;
+            if (!N->motion) {
+                worse(&st, imap_box(&m.S[n], m.sbad[n], &b, &b));
+                n = m.mot[n];
+            } else if (motions++ < SC_WALK) {
+                worse(&st, node_box(s, N, &b));
+                n = N->parent;
             } else {
-                for (int q = N->first + N->n - 1; q >= N->first; q--)
-                    worse(&st, cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, &b, &b));
+                worse(&st, imap_box(&m.F[m.fidx[n]], m.fbad[m.fidx[n]], &b, &b));
+                break;
             }
         }
         L->world = b;
@@ -530,4 +805,6 @@ void scene_eval(scene *s)
             if (b.hi[j] > s->world.hi[j]) s->world.hi[j] = b.hi[j];
         }
     }
+    if (have_maps)
+        maps_free(&m);
 }

@@ -1,7 +1,8 @@
 /*
  * certbox scene files: a node hierarchy of affine transforms with box,
  * sphere and ellipsoid leaves; world-space bounds of every leaf and of the
- * scene, level by level through the proven kernels.  Format:
+ * scene, level by level through the proven kernels (deep leaves: then by
+ * outward-rounded interval maps composed once per node).  Format:
  * examples/scene-format.md.  Used by the `certbox` tool (main.c) and by
  * tests/test_scene.c.
  */
@@ -52,9 +53,12 @@ typedef struct scene {
  * and err holds "FILE:LINE: message" (file is the name used in messages);
  * on failure nothing is kept (the scene is freed). */
 int scene_parse(scene *s, const char *text, const char *file, char *err, size_t errlen);
-/* Read a file and parse it. */
+/* The same for text[0 .. n-1] (text[n] must be '\0'): a NUL byte inside is
+ * refused with its line, "FILE:LINE: the file contains a NUL byte (column C)". */
+int scene_parse_buf(scene *s, const char *text, size_t n, const char *file, char *err, size_t errlen);
+/* Read a file and parse it (scene_parse_buf). */
 int scene_load(scene *s, const char *path, char *err, size_t errlen);
-/* Compute every leaf's world box and the scene box. */
+/* Compute every leaf's world box and the scene box (linear time). */
 void scene_eval(scene *s);
 void scene_free(scene *s);
 const char *scene_kind_name(int kind);
