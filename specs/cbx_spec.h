@@ -416,16 +416,32 @@
     // Conversions: one axis in their domain (finite, magnitude <= 2^1019).
     predicate conv_dom(real x, real y) = -CBX_R19 <= x <= CBX_R19 && -CBX_R19 <= y <= CBX_R19;
 
+    // Tightness of a converted end: within 16u (|x| + |y|) + 2^-1066 of the
+    // exact end (binary32: 16u and 2^-141), x, y the axis' two inputs.
+    logic real conv_gap(real x, real y) = CBX_U16 * (\abs(x) + \abs(y)) + CBX_ETA256;
+
+    // Every axis of the input in the conversions' domain: status CBX_OK.
+    predicate b2c_dom(cbx_box *in, integer i) =
+      \is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i]);
+    predicate c2b_dom(cbx_cbox *in, integer i) =
+      \is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i]);
+    predicate b2c_ok(cbx_box *in) = b2c_dom(in, 0) && b2c_dom(in, 1) && b2c_dom(in, 2);
+    predicate c2b_ok(cbx_cbox *in) = c2b_dom(in, 0) && c2b_dom(in, 1) && c2b_dom(in, 2);
+
     predicate b2c_axis(cbx_box *in, cbx_cbox *out, integer i) =
       ((\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
          (\is_finite(out->c[i]) && \is_finite(out->h[i])
-          && out->c[i] - out->h[i] <= in->lo[i] && in->hi[i] <= out->c[i] + out->h[i]))
+          && out->c[i] - out->h[i] <= in->lo[i] && in->hi[i] <= out->c[i] + out->h[i]
+          && in->lo[i] - conv_gap(in->lo[i], in->hi[i]) <= out->c[i] - out->h[i]
+          && out->c[i] + out->h[i] <= in->hi[i] + conv_gap(in->lo[i], in->hi[i])))
       && (!(\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
           cwhole_axis(out, i));
     predicate c2b_axis(cbx_cbox *in, cbx_box *out, integer i) =
       ((\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
          (\is_finite(out->lo[i]) && \is_finite(out->hi[i])
-          && out->lo[i] <= in->c[i] - in->h[i] && in->c[i] + in->h[i] <= out->hi[i]))
+          && out->lo[i] <= in->c[i] - in->h[i] && in->c[i] + in->h[i] <= out->hi[i]
+          && (in->c[i] - in->h[i]) - conv_gap(in->c[i], in->h[i]) <= out->lo[i]
+          && out->hi[i] <= (in->c[i] + in->h[i]) + conv_gap(in->c[i], in->h[i])))
       && (!(\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
           whole_axis(out, i));
 */

@@ -180,6 +180,7 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
       ensures ax0: b2c_axis(in, out, 0);
       ensures ax1: b2c_axis(in, out, 1);
       ensures ax2: b2c_axis(in, out, 2);
+      ensures ok_iff: \result == CBX_OK <==> \at(b2c_ok(in), Pre);
     complete behaviors;
     disjoint behaviors;
 */
@@ -201,6 +202,7 @@ cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out);
       ensures ax0: c2b_axis(in, out, 0);
       ensures ax1: c2b_axis(in, out, 1);
       ensures ax2: c2b_axis(in, out, 2);
+      ensures ok_iff: \result == CBX_OK <==> \at(c2b_ok(in), Pre);
     complete behaviors;
     disjoint behaviors;
 */

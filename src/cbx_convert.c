@@ -20,12 +20,15 @@
     assigns \nothing;
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
     ensures sound: \result.a - \result.b <= lo && hi <= \result.a + \result.b;
+    ensures tight: lo - conv_gap(lo, hi) <= \result.a - \result.b
+                   && \result.a + \result.b <= hi + conv_gap(lo, hi);
 */
 static conv_res b2c(cbx_fp lo, cbx_fp hi)
 {
     cbx_fp a = cbx_mul_rn(lo, CBX_C(0.5));
     cbx_fp b = cbx_mul_rn(hi, CBX_C(0.5));
     cbx_fp c = cbx_add_rn(a, b);
+    /*@ assert cm: \abs(c - (lo + hi) / 2) <= CBX_U2 * (\abs(lo) + \abs(hi)) + CBX_ETA4; */
     cbx_fp d1 = cbx_sub_rn(hi, c);
     cbx_fp d2 = cbx_sub_rn(c, lo);
     cbx_fp d = cbx_max2(d1, d2);
@@ -34,12 +37,16 @@ static conv_res b2c(cbx_fp lo, cbx_fp hi)
     /*@ assert dpos: d >= 0; */
     /*@ assert up1: hi - c <= d * (1 + CBX_U2) + CBX_ETA2; */
     /*@ assert up2: c - lo <= d * (1 + CBX_U2) + CBX_ETA2; */
+    /*@ assert dup: d <= ((hi - lo) / 2 + \abs(c - (lo + hi) / 2)) * (1 + CBX_U) + CBX_ETA; */
     cbx_fp e = cbx_mul_rn(cbx_max2(d, CBX_C(0.0)), CBX_K(U8));
     cbx_fp f = cbx_add_rn(cbx_max2(d, CBX_C(0.0)), e);
     conv_res r;
     r.a = c;
     r.b = cbx_add_rn(f, CBX_K(ETA16));
     /*@ assert hb: r.b >= d * (1 + CBX_U2) + CBX_ETA4; */
+    /*@ assert hup: r.b <= d * (1 + CBX_U12) + CBX_ETA64; */
+    /*@ assert thi: r.a + r.b <= hi + conv_gap(lo, hi); */
+    /*@ assert tlo: lo - conv_gap(lo, hi) <= r.a - r.b; */
     return r;
 }
 
@@ -81,13 +88,17 @@ cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
     int k0 = conv_ok(in->lo[0], in->hi[0]);
     int k1 = conv_ok(in->lo[1], in->hi[1]);
     int k2 = conv_ok(in->lo[2], in->hi[2]);
+    /*@ assert ok: (k0 != 0 && k1 != 0 && k2 != 0) <==> b2c_ok(in); */
     /* not inverted and finite: lo <= hi */
     if (k0) { conv_res r = b2c(in->lo[0], in->hi[0]); out->c[0] = r.a; out->h[0] = r.b; }
     else cwhole_set(out, 0);
+    /*@ assert ax0: b2c_axis(in, out, 0); */
     if (k1) { conv_res r = b2c(in->lo[1], in->hi[1]); out->c[1] = r.a; out->h[1] = r.b; }
     else cwhole_set(out, 1);
+    /*@ assert ax1: b2c_axis(in, out, 1); */
     if (k2) { conv_res r = b2c(in->lo[2], in->hi[2]); out->c[2] = r.a; out->h[2] = r.b; }
     else cwhole_set(out, 2);
+    /*@ assert ax2: b2c_axis(in, out, 2); */
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
 }
 
@@ -121,11 +132,15 @@ cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
     int k0 = conv_ok(in->c[0], in->h[0]);
     int k1 = conv_ok(in->c[1], in->h[1]);
     int k2 = conv_ok(in->c[2], in->h[2]);
+    /*@ assert ok: (k0 != 0 && k1 != 0 && k2 != 0) <==> c2b_ok(in); */
     if (k0) { conv_res r = cbx_c2b(in->c[0], in->h[0]); out->lo[0] = r.a; out->hi[0] = r.b; }
     else whole_set(out, 0);
+    /*@ assert ax0: c2b_axis(in, out, 0); */
     if (k1) { conv_res r = cbx_c2b(in->c[1], in->h[1]); out->lo[1] = r.a; out->hi[1] = r.b; }
     else whole_set(out, 1);
+    /*@ assert ax1: c2b_axis(in, out, 1); */
     if (k2) { conv_res r = cbx_c2b(in->c[2], in->h[2]); out->lo[2] = r.a; out->hi[2] = r.b; }
     else whole_set(out, 2);
+    /*@ assert ax2: c2b_axis(in, out, 2); */
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
 }

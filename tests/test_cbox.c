@@ -109,18 +109,19 @@ enum {
     F_DCROSS,    /* D: mpq corner min / max != fixed-point C' -+ H'      */
     F_ROUND,     /* round trip does not contain the original             */
     F_INPUT,     /* the call modified its input                          */
+    F_CSPEC,     /* conversions: beyond 16 u (|x| + |y|) + 2^-1066 (conv_gap) */
     NF
 };
 static const char *const f_name[NF] = {
     "status", "out-set", "special-out", "lost-axes", "finite", "containment",
     "spec-tight", "sanity<=64", "tiny-abs", "corners", "cross-CH",
     "D-finite", "D-contain", "D-spec-tight", "D-corners", "D-cross-CH",
-    "round-trip", "inputs"
+    "round-trip", "inputs", "conv-tight"
 };
 static const char *const f_unit[NF] = {
     "cases", "cases", "cases", "axes", "axes", "axes",
     "axes", "axes", "axes", "axes", "axes",
-    "axes", "axes", "axes", "axes", "axes", "cases", "cases"
+    "axes", "axes", "axes", "axes", "axes", "cases", "cases", "axes"
 };
 
 typedef struct verdict {
@@ -292,6 +293,20 @@ static int within_spec(ctx *k, const mpz_t gap, const mpz_t S)
     mpz_set_ui(k->t, 1);
     mpz_mul_2exp(k->t, k->t, XU_SHIFT - 1065 + 53);
     mpz_addmul_ui(k->t, S, 12);
+    return mpz_cmp(k->p, k->t) <= 0;
+}
+
+/* gap <= 16 u (|x| + |y|) + 2^-1066: conv_gap of cbx_spec.h, the proven
+ * tightness of both conversions (x, y the axis' two inputs) */
+static int within_conv(ctx *k, const mpz_t gap, double x, double y)
+{
+    xu_scaled_d(&k->x, k->t, fabs(x));
+    xu_scaled_d(&k->x, k->p, fabs(y));
+    mpz_add(k->t, k->t, k->p);                   /* |x| + |y| */
+    mpz_set_ui(k->p, 1);
+    mpz_mul_2exp(k->p, k->p, XU_SHIFT - 1066 + 49);
+    mpz_add(k->t, k->t, k->p);                   /* + 2^-1066 2^49 */
+    mpz_mul_2exp(k->p, gap, 49);                 /* gap / (16 u) */
     return mpz_cmp(k->p, k->t) <= 0;
 }
 
@@ -617,6 +632,13 @@ static int b2c_run(ctx *k, group *g, const cbx_box *in, cbx_cbox *out,
                      "(excess lo %.3g, hi %.3g)", i, ulo, uhi);
             v_fail(v, F_CONTAIN, why);
         }
+        v->applied[F_CSPEC]++;
+        if (!within_conv(k, k->olo, in->lo[i], in->hi[i])
+            || !within_conv(k, k->ohi, in->lo[i], in->hi[i])) {
+            snprintf(why, sizeof why, "axis %d: beyond the proven conv_gap "
+                     "(excess lo %.3g, hi %.3g)", i, ulo, uhi);
+            v_fail(v, F_CSPEC, why);
+        }
         v->applied[tiny ? F_TINYABS : F_SANITY]++;
         if (bad) {
             snprintf(why, sizeof why, "axis %d: sanity bound (mean excess %.3g%s)", i,
@@ -698,6 +720,13 @@ static int c2b_run(ctx *k, group *g, const cbx_cbox *in, cbx_box *out,
             snprintf(why, sizeof why, "axis %d: [lo, hi] does not contain [c-h, c+h] "
                      "(excess lo %.3g, hi %.3g)", i, ulo, uhi);
             v_fail(v, F_CONTAIN, why);
+        }
+        v->applied[F_CSPEC]++;
+        if (!within_conv(k, k->olo, in->c[i], in->h[i])
+            || !within_conv(k, k->ohi, in->c[i], in->h[i])) {
+            snprintf(why, sizeof why, "axis %d: beyond the proven conv_gap "
+                     "(excess lo %.3g, hi %.3g)", i, ulo, uhi);
+            v_fail(v, F_CSPEC, why);
         }
         v->applied[tiny ? F_TINYABS : F_SANITY]++;
         if (bad_lo || bad_hi) {

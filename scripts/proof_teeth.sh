@@ -1,0 +1,67 @@
+#!/bin/sh
+# make proof-teeth: does each contract have teeth?  Each case copies the
+# sources to a scratch directory, replaces one function body by a weaker one
+# that is still sound (a wider box) but no longer tight, proves that
+# function as proofs/job.sh's first pass does (CVC4 and Z3, 10 s a goal), and
+# requires the named goal (a tightness postcondition or the assertion that
+# carries it) to stay unproved: the contract, not only the tests, rejects
+# the weakened body.  A weakened body is false against the contract, so no
+# time limit would prove it; the goal's name shows it failed for that
+# reason.
+# Usage: sh scripts/proof_teeth.sh  (from the checkout's root)
+set -u
+root=$(pwd)
+B=$root/build/proof-teeth
+rm -rf "$B"
+mkdir -p "$B"
+conf=$(sh proofs/setup.sh "$B/why3")
+export WHY3CONFIG="$conf"
+pass=0; fail=0
+# case NAME FILE FUNCTION TU GOAL OLD NEW: replace OLD by NEW in FILE, prove
+# FUNCTION in TU, require an unproved goal whose name contains GOAL
+case_() {
+  name=$1; file=$2; fct=$3; tu=$4; goal=$5; old=$6; new=$7
+  d=$B/$name
+  mkdir -p "$d"
+  cp -r src specs proofs "$d"/
+  python3 - "$d/$file" "$old" "$new" <<'PY'
+import sys
+p, old, new = sys.argv[1:4]
+t = open(p).read()
+if t.count(old) != 1:
+    sys.exit('proof_teeth: the text to replace is not found exactly once in ' + p)
+open(p, 'w').write(t.replace(old, new))
+PY
+  fam=64; case $tu in *_f.c) fam=32;; esac
+  (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
+     -wp -wp-rte -wp-split -wp-prover "cvc4r$fam,z3r$fam" -wp-timeout 10 -wp-par 2 \
+     -wp-cache none -wp-fct "$fct" > "$d/wp.log" 2>&1) || true
+  bad=$(grep -E '^\[wp\] \[(Failed|Timeout|Unknown)\] Goal' "$d/wp.log" | sed 's/.*Goal typed_//; s/ .*//')
+  if echo "$bad" | grep -q "$goal"; then
+    pass=$((pass + 1))
+    echo "proof-teeth: ok   $name: caught (unproved: $(echo $bad | tr ' ' '\n' | grep "$goal" | head -3 | tr '\n' ' '))"
+  else
+    fail=$((fail + 1))
+    echo "proof-teeth: FAIL $name: not caught (unproved goals: ${bad:-none})"
+  fi
+}
+# 1. box -> cbox: the half-width doubled (still contains the box)
+case_ b2c-half-doubled src/cbx_convert.c b2c proofs/all.c tight \
+  "    r.b = cbx_add_rn(f, CBX_K(ETA16));" \
+  "    r.b = cbx_add_rn(cbx_add_rn(f, f), CBX_K(ETA16));"
+# 2. cbox -> box: the lower end at c - 2h (binary32 family)
+case_ c2b-lo-widened src/cbx_endpoints.h cbx_c2b proofs/all_f.c tight \
+  "    cbx_fp s = cbx_sub_rn(c, h);" \
+  "    cbx_fp s = cbx_sub_rn(cbx_sub_rn(c, h), h);"
+# 3. the transform's kernel: the lower end widened twice
+case_ kernel-lo-widened-twice src/cbx_kernel.h cbx_end_lo proofs/all.c tight \
+  "    return cbx_sub_rn(s, w);" \
+  "    return cbx_sub_rn(cbx_sub_rn(s, w), w);"
+# Not yet in a contract (issue 19): these weakenings would be proved, so
+# they are listed, not run:
+echo "proof-teeth: gap  tight mode body replaced by cbx_transform_box: no optimality postcondition yet"
+echo "proof-teeth: gap  sphere radius doubled: no tightness postcondition on cbx_sphere_box yet"
+echo "proof-teeth: gap  motion returning the whole space with CBX_OK: no finite-end postcondition yet"
+echo "proof-teeth: $pass caught, $fail not caught"
+echo "$pass passed, $fail failed"
+[ $fail = 0 ]
