@@ -29,7 +29,7 @@ B := build
 LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c \
            src/cbx_interval_f.c src/cbx_center_f.c src/cbx_convert_f.c src/cbx_sphere_f.c src/cbx_batch_f.c \
            src/cbx_ieee.c src/cbx_ieee_f.c
-HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_ieee_cases.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
