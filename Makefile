@@ -76,6 +76,9 @@ $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Isrc/scene -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+# the tight mode with the fma-free two_prod (Dekker's product, src/cbx_eft.h)
+$(B)/test_tight_nofma: tests/test_tight.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+	$(CC) $(ALLCFLAGS) -DCBX_NO_FMA -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
@@ -86,8 +89,8 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee
-test: $(TESTS:%=$(B)/test_%) $(B)/certbox
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft
+test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
 	./$(B)/test_exact 1000000 1
@@ -98,6 +101,8 @@ test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_chain 1000 20 1
 	./$(B)/test_batch 200 1
 	./$(B)/test_tight 150 1
+	./$(B)/test_tight_nofma 150 1
+	./$(B)/test_eft 1000 1
 	./$(B)/test_classes 200000 1
 	./$(B)/test_float 200000 1
 	./$(B)/test_ieee
@@ -117,6 +122,7 @@ test-san: $(TESTS:%=$(B)/san/test_%)
 	./$(B)/san/test_chain 1000 10 2
 	./$(B)/san/test_batch 200 2
 	./$(B)/san/test_tight 50 2
+	./$(B)/san/test_eft 200 2
 	./$(B)/san/test_classes 50000 2
 	./$(B)/san/test_float 50000 2
 	./$(B)/san/test_ieee

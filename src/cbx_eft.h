@@ -85,6 +85,10 @@ cbx_dd cbx_two_prod(double a, double b);
 #define CBX_TWO_PROD_NAME "Dekker/Veltkamp (no fma)"
 #else
 #define CBX_TWO_PROD_NAME "fma"
+#endif
+/* The fma form is compiled where it is selected, and in the test that
+ * compares both forms (CBX_EFT_BOTH, tests/test_eft.c). */
+#if !CBX_EFT_DEKKER || defined(CBX_EFT_BOTH)
 #if defined(CBX_TEST_NAIVE_FMA)
 /* test hook only (scripts/ieee.sh): an fma rounded twice, as newlib's
  * generic fma; cbx_ieee_check() must set CBX_IEEE_FMA and CBX_IEEE_EFT */
@@ -108,7 +112,6 @@ static inline cbx_dd cbx_two_sum(double a, double b)
     return r;
 }
 
-#if CBX_EFT_DEKKER
 /* Veltkamp's split: x = h + t, h on 26 bits, t on 26 bits (|x| <= 2^996). */
 static inline cbx_dd cbx_split(double x)
 {
@@ -120,7 +123,8 @@ static inline cbx_dd cbx_split(double x)
     return r;
 }
 
-/* Dekker's mul12, the operation order of Flocq's proof. */
+/* Dekker's mul12: x*y - r for r = RN(x*y), in the operation order of
+ * Flocq's proof (Pff2Flocq.v, Dekker). */
 static inline double cbx_dekker_err(double x, double y, double r)
 {
     cbx_dd sx = cbx_split(x);
@@ -135,11 +139,11 @@ static inline double cbx_dekker_err(double x, double y, double r)
     return t3 + x2y2;
 }
 
-static inline cbx_dd cbx_two_prod(double a, double b)
+static inline cbx_dd cbx_two_prod_dekker(double a, double b)
 {
     cbx_dd r;
     r.hi = a * b;
-    /* keep both factors <= 2^996: |a*b| <= 2^1018 makes the other <= 2^23,
+    /* keep both factors <= 2^995: |a*b| <= 2^1018 makes the other <= 2^23,
      * so a power-of-two exchange is exact and leaves a*b unchanged */
     if (a > 0x1p995 || a < -0x1p995)
         r.lo = cbx_dekker_err(a * 0x1p-64, b * 0x1p64, r.hi);
@@ -149,8 +153,9 @@ static inline cbx_dd cbx_two_prod(double a, double b)
         r.lo = cbx_dekker_err(a, b, r.hi);
     return r;
 }
-#else
-static inline cbx_dd cbx_two_prod(double a, double b)
+
+#if !CBX_EFT_DEKKER || defined(CBX_EFT_BOTH)
+static inline cbx_dd cbx_two_prod_fma(double a, double b)
 {
     cbx_dd r;
     r.hi = a * b;
@@ -158,6 +163,15 @@ static inline cbx_dd cbx_two_prod(double a, double b)
     return r;
 }
 #endif
+
+static inline cbx_dd cbx_two_prod(double a, double b)
+{
+#if CBX_EFT_DEKKER
+    return cbx_two_prod_dekker(a, b);
+#else
+    return cbx_two_prod_fma(a, b);
+#endif
+}
 #endif
 
 #endif /* CBX_EFT_H */
