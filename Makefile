@@ -137,7 +137,7 @@ embedded:
 
 # The exact test suites on 32-bit ARM under qemu-user, output compared line
 # by line with this machine's (scripts/cross.sh).
-check-cross: $(TESTS:%=$(B)/test_%)
+check-cross: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma
 	@sh scripts/deps.sh cross
 	sh scripts/cross.sh
 
