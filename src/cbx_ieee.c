@@ -70,14 +70,13 @@ static unsigned check_sqrt_cases(void)
 {
     unsigned bad = 0, i;
 #if CBX_INST == 64
-#define SQ cbx_sqrt_cases
+#define SQ cbx_sqrt_cases /* one instance per translation unit */
 #else
 #define SQ cbx_sqrtf_cases
 #endif
     for (i = 0; i < sizeof SQ / sizeof SQ[0]; i++)
         if (!same(check_sqrt(opaque(SQ[i][0])), SQ[i][1]))
             bad |= CBX_IEEE_SQRT;
-#undef SQ
     return bad;
 }
 
