@@ -19,7 +19,8 @@
  *            p = 53), subnormal factors included, and no operation
  *            overflows (Flocq, Pff2Flocq.v, Theorem Dekker: Boldo's proof,
  *            "Pitfalls of a full floating-point proof", IJCAR 2006).  The
- *            split's C*x overflows for |x| > 2^996; the contract's
+ *            split's C*x overflows as |x| nears 2^997 (DBL_MAX / C), so a
+ *            factor above 2^995 is not split as it is: the contract's
  *            |a*b| <= 2^1018 leaves |other factor| <= 2^23 then, so the
  *            big factor is scaled by 2^-64 and the other by 2^64: both
  *            exact, the exact product unchanged; every other intermediate
@@ -33,7 +34,8 @@
  *   (whose generic fma is a plain x*y+z: wrong here), the Cortex-M4F (no
  *   double FPU), unknown libraries.  CBX_TWO_PROD_NAME says which.
  *   !defined(FP_FAST_FMA) alone would be the wrong test: glibc's fma is
- *   correct without the instruction, newlib's is wrong with any CPU.
+ *   correct without the instruction, newlib's generic one is wrong on
+ *   any CPU that lacks it.
  * Both theorems are machine-checked in Flocq (Boldo, Melquiond); the tests
  * (tests/test_tight.c, tests/test_eft.c) check them against GMP, and
  * cbx_ieee_check() (CBX_IEEE_EFT, CBX_IEEE_FMA) checks the built ones on
