@@ -47,7 +47,7 @@ B := build
 LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c \
            src/cbx_interval_f.c src/cbx_center_f.c src/cbx_convert_f.c src/cbx_sphere_f.c src/cbx_batch_f.c \
            src/cbx_ieee.c src/cbx_ieee_f.c
-HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_ieee_cases.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
@@ -123,6 +123,9 @@ $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Isrc/scene -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+# the tight mode with the fma-free two_prod (Dekker's product, src/cbx_eft.h)
+$(B)/test_tight_nofma: tests/test_tight.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+	$(CC) $(ALLCFLAGS) -DCBX_NO_FMA -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
@@ -133,8 +136,8 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee gltf
-test: $(TESTS:%=$(B)/test_%) $(B)/certbox
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf
+test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
 	./$(B)/test_exact 1000000 1
@@ -145,6 +148,8 @@ test: $(TESTS:%=$(B)/test_%) $(B)/certbox
 	./$(B)/test_chain 1000 20 1
 	./$(B)/test_batch 200 1
 	./$(B)/test_tight 150 1
+	./$(B)/test_tight_nofma 150 1
+	./$(B)/test_eft 1000 1
 	./$(B)/test_classes 200000 1
 	./$(B)/test_float 200000 1
 	./$(B)/test_ieee
@@ -165,6 +170,7 @@ test-san: $(TESTS:%=$(B)/san/test_%) $(B)/certbox
 	./$(B)/san/test_chain 1000 10 2
 	./$(B)/san/test_batch 200 2
 	./$(B)/san/test_tight 50 2
+	./$(B)/san/test_eft 200 2
 	./$(B)/san/test_classes 50000 2
 	./$(B)/san/test_float 50000 2
 	./$(B)/san/test_ieee
@@ -180,7 +186,7 @@ embedded:
 
 # The exact test suites on 32-bit ARM under qemu-user, output compared line
 # by line with this machine's (scripts/cross.sh).
-check-cross: $(TESTS:%=$(B)/test_%)
+check-cross: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma
 	@sh scripts/deps.sh cross
 	sh scripts/cross.sh
 

@@ -1,6 +1,7 @@
 #!/bin/sh
 # make check-cross: the exact test suites on a second architecture.
-# Every suite is cross-compiled for 32-bit ARM (arm-linux-gnueabihf, VFP,
+# Every suite (the tight mode with both two_prod forms among them) is
+# cross-compiled for 32-bit ARM (arm-linux-gnueabihf, VFP,
 # statically linked with the armhf GMP and MPFR), run under qemu-arm, and
 # its output compared line by line with the same run on this machine: IEEE
 # arithmetic is deterministic, so every count, status, excess statistic and
@@ -17,14 +18,18 @@ mkdir -p $B
 F="-std=c99 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fno-fast-math -O2 -Isrc -Itests"
 LIB="src/cbx_*.c"
 # suite and arguments (host and ARM alike); sizes keep qemu under ~2 minutes
-SUITES=${CROSS_SUITES:-"badinput: special: exact:200000,1 float:50000,1 cbox:30000,1 sphere:20000,1 alias:10000,1 halfspace:20,1 batch:20,1 tight:10,1 classes:20000,1 chain:200,5,1"}
+# (NAME_nofma: tests/test_NAME.c and the library built with -DCBX_NO_FMA,
+# compared with build/test_NAME_nofma; eft: both two_prod forms, GMP)
+SUITES=${CROSS_SUITES:-"badinput: special: exact:200000,1 float:50000,1 cbox:30000,1 sphere:20000,1 alias:10000,1 halfspace:20,1 batch:20,1 tight:10,1 tight_nofma:10,1 eft:100,1 classes:20000,1 chain:200,5,1"}
 pass=0; fail=0
 echo "cross: $($XCC --version | head -1); $($QEMU --version | head -1)"
 start=$(date +%s)
 for s in $SUITES; do
   name=${s%%:*}; args=$(echo "${s#*:}" | tr ',' ' ')
+  src=$name; extra=""
+  case $name in *_nofma) src=${name%_nofma}; extra=-DCBX_NO_FMA ;; esac
   # shellcheck disable=SC2086
-  $XCC $F tests/test_$name.c tests/exact_util.c $LIB -static -lmpfr -lgmp -lm -o $B/test_$name
+  $XCC $F $extra tests/test_$src.c tests/exact_util.c $LIB -static -lmpfr -lgmp -lm -o $B/test_$name
   # shellcheck disable=SC2086
   ./build/test_$name $args > $B/$name.host.txt 2>&1 || true
   # shellcheck disable=SC2086

@@ -44,9 +44,22 @@ PUBLIC = ['cbx_transform_box', 'cbx_transform_boxes', 'cbx_transform_cbox', 'cbx
           'cbx_cbox_to_box', 'cbx_sphere_box', 'cbx_ellipsoid_box']
 PUBLIC64 = ['cbx_transform_box_tight', 'cbx_classify', 'cbx_transform_box_as', 'cbx_motion_box']
 ALLOWED = re.compile(r'^(__aeabi_\w+|sqrt|sqrtf)$')
-# The binary64 tight mode's two_prod is an FMA (src/cbx_eft.h): a target
-# without a double FMA instruction (the M4F) calls libm's fma there.
-ALLOWED_IN = {'cbx_tight.o': re.compile(r'^fma$')}
+# The binary64 tight mode's two_prod (src/cbx_eft.h) is an fma where the
+# target has the instruction (M7: vfma.f64) or glibc's, else Dekker's
+# product (M4F, freestanding: no fma call).  libm's fma is allowed in
+# cbx_tight.o only where the fma form is selected (by -DCBX_USE_FMA on a
+# target without the instruction): that libm's fma must be correctly
+# rounded (cbx_ieee_check's CBX_IEEE_FMA; newlib's generic one is not).
+FMA_IN = {'cbx_tight.o': re.compile(r'^fma$')}
+
+
+def two_prod_form(flags):
+    """the two_prod form cbx_eft.h selects for these flags, from its macros"""
+    out = run([CC] + FLAGS + flags + ['-dM', '-E', os.path.join(ROOT, 'src', 'cbx_eft.h')])
+    name = re.search(r'#define CBX_TWO_PROD_NAME "([^"]+)"', out).group(1)
+    dekker = re.search(r'#define CBX_EFT_DEKKER 1\b', out) is not None
+    fast = re.search(r'#define __FP_FAST_FMA 1\b', out) is not None
+    return name, dekker, fast
 
 
 def run(cmd, cwd=None):
@@ -147,15 +160,27 @@ def main():
         sizes, _ = symbols(ds)
         frame, edges, dyn = callgraph(d2)
         framess, edgess, _ = callgraph(ds)
+        name, dekker, fast = two_prod_form(flags)
+        allowed_in = {} if dekker else FMA_IN
         lines.append('## %s\n' % title)
         lines.append('`%s`\n' % ' '.join(flags))
+        lines.append('two_prod (tight mode, src/cbx_eft.h): %s; %s.\n'
+                     % (name, 'no double fma instruction (no __FP_FAST_FMA), freestanding: no trusted libm fma'
+                        if dekker else 'double fma instruction (__FP_FAST_FMA)' if fast
+                        else 'the C library\'s fma, as selected by the flags'))
+        print('embedded: %s: two_prod = %s' % (target, name))
+        if not dekker and not fast:
+            bad.append('%s: two_prod calls a library fma (no instruction): vouch for it or use -DCBX_NO_FMA' % target)
+        tight = 'cbx_tight.o'
+        if dekker and any(u == 'fma' for u in undef.get(tight, [])):
+            bad.append('%s: the Dekker form selected but %s calls fma' % (target, tight))
         # undefined symbols
         helpers = set()
         for o, us in undef.items():
             for u in us:
                 if u.startswith('cbx_'):
                     continue   # another object of the library
-                if not ALLOWED.match(u) and not (o in ALLOWED_IN and ALLOWED_IN[o].match(u)):
+                if not ALLOWED.match(u) and not (o in allowed_in and allowed_in[o].match(u)):
                     bad.append('%s %s needs %s' % (target, o, u))
                 helpers.add(u)
                 if target == 'cortex-m4f' and o.endswith('_f.o') and u.startswith('__aeabi_d'):
@@ -183,9 +208,9 @@ def main():
         lines.append('\nWhole library (both families, every function): %d bytes at -O2, %d at -Os. '
                      'Stack: every frame static (%s).\n' % (total2, totals, 'none dynamic' if not dyn else 'DYNAMIC: ' + ', '.join(dyn)))
         bad += ['%s: dynamic stack in %s' % (target, x) for x in dyn]
-    lines.append('Helper calls (`+ ...`): libgcc\'s soft-float routines (M4F, binary64 only), '
-                 '`sqrt`, and `fma` for the binary64 tight mode on a target without a double FMA '
-                 'instruction (M4F); their own stack is not in the figure.\n')
+    lines.append('Helper calls (`+ ...`): libgcc\'s soft-float routines (M4F, binary64 only) and '
+                 '`sqrt`; their own stack is not in the figure. The tight mode\'s two_prod is the fma '
+                 'instruction on the M7 and Dekker\'s product (no fma call) on the M4F.\n')
     if bad:
         lines.append('PROBLEMS:\n' + '\n'.join('- ' + b for b in bad))
     text = '\n'.join(lines) + '\n'

@@ -6,7 +6,8 @@
 #      rounding modes: each must be caught (its bit set, no other).
 #   2. The check's own sources built with flags that break the proofs'
 #      model: FMA contraction (if this CPU has FMA), reassociation, no signed
-#      zeros: each must be caught at run time.
+#      zeros, an fma rounded twice, sqrt not correctly rounded (test hooks):
+#      each must be caught at run time; the fma-free build must pass.
 #   3. -ffast-math, -ffinite-math-only and x87 arithmetic (-mfpmath=387):
 #      every library source must refuse to compile.
 # Usage: sh scripts/ieee.sh CC  (run from the checkout's root, after make all)
@@ -50,6 +51,13 @@ fi
 variant "built with -fassociative-math -fno-signed-zeros -fno-trapping-math" 0x3a \
   -fassociative-math -fno-signed-zeros -fno-trapping-math
 variant "built with -fno-signed-zeros" 0x10 -fno-signed-zeros
+# what the proofs trust, broken through the test hooks: an fma rounded
+# twice (x*y+z, as newlib's generic fma) and square roots that are not
+# correctly rounded (binary64 through the x87 format, binary32 by Newton's
+# iteration); the fma-free build (Dekker's product) must pass
+variant "fma replaced by x*y+z (CBX_TEST_NAIVE_FMA)" 0x140 -DCBX_TEST_NAIVE_FMA
+variant "sqrt and sqrtf not correctly rounded (CBX_TEST_NAIVE_SQRT)" 0x80 -DCBX_TEST_NAIVE_SQRT
+variant "fma-free build (CBX_NO_FMA: Dekker's product) passes" 0 -DCBX_NO_FMA
 # 3. refused at compile time, by every library source
 refused() { # name flags...
   name=$1; shift

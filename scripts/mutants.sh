@@ -151,8 +151,8 @@ done
 cp -p "$ROOT/Makefile" "$BASE/Makefile"
 rm -rf "$BASE/build"
 
-TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_float test_classes"
-BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_float build/test_classes"
+TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_eft test_float test_classes"
+BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_eft build/test_float build/test_classes"
 args_of() {
     case $1 in
     test_badinput) echo "" ;;
@@ -164,6 +164,7 @@ args_of() {
     test_halfspace) echo "$HALF_N $SEED" ;;
     test_batch) echo "50 $SEED" ;;
     test_tight) echo "${MUT_TIGHT_N:-40} $SEED" ;;
+    test_eft) echo "100 $SEED" ;;
     test_float) echo "${MUT_FLOAT_N:-50000} $SEED" ;;
     test_classes) echo "${MUT_CLASSES_N:-20000} $SEED" ;;
     esac

@@ -8,6 +8,10 @@
  * -mfma), x87 excess precision, -ffast-math and its parts, flush-to-zero
  * modes set at start-up, or a rounding mode changed with fesetround().
  *
+ * It also tests what the proofs trust (proofs/README.md): sqrt correctly
+ * rounded, the tight mode's EFTs exact, the fma they call (if any)
+ * correctly rounded, on hard cases kept as data (cbx_ieee_cases.h).
+ *
  * Each check below runs a known case through the library's own rounding
  * primitives (cbx_round.h, inlined exactly as in the kernels, in this
  * translation unit's format) on values the compiler cannot see (volatile),
@@ -18,6 +22,10 @@
 #include "certbox.h"
 #include "cbx_prec.h"
 #include "cbx_round.h"
+#include "cbx_ieee_cases.h"
+#if CBX_INST == 64
+#include "cbx_eft.h"
+#endif
 
 #if CBX_INST == 32
 #define cbx_ieee_fmt cbx_ieee_fmt_f
@@ -30,6 +38,76 @@ static cbx_fp opaque(cbx_fp x)
     volatile cbx_fp v = x;
     return v;
 }
+
+/* Bit-identical (signed zeros told apart), and no NaN. */
+static int same(cbx_fp x, cbx_fp y)
+{
+    return x == y && (x != CBX_C(0.0) || (CBX_C(1.0) / x > CBX_C(0.0)) == (CBX_C(1.0) / y > CBX_C(0.0)));
+}
+
+#if defined(CBX_TEST_NAIVE_SQRT)
+/* Test hook only (scripts/ieee.sh): a square root that is not correctly
+ * rounded on hard cases: binary64 rounded twice through the x87 format,
+ * binary32 by Newton's iteration in the format. */
+static cbx_fp check_sqrt(cbx_fp x)
+{
+#if CBX_INST == 64
+    return (cbx_fp)__builtin_sqrtl((long double)x);
+#else
+    cbx_fp y = x > CBX_C(1.0) ? x : CBX_C(1.0);
+    int i;
+    for (i = 0; i < 200; i++)
+        y = CBX_C(0.5) * (y + x / y);
+    return y;
+#endif
+}
+#else
+#define check_sqrt cbx_sqrt_rn /* the library's own square root */
+#endif
+
+/* sqrt correctly rounded on the hard cases (cbx_ieee_cases.h) */
+static unsigned check_sqrt_cases(void)
+{
+    unsigned bad = 0, i;
+#if CBX_INST == 64
+#define SQ cbx_sqrt_cases /* one instance per translation unit */
+#else
+#define SQ cbx_sqrtf_cases
+#endif
+    for (i = 0; i < sizeof SQ / sizeof SQ[0]; i++)
+        if (!same(check_sqrt(opaque(SQ[i][0])), SQ[i][1]))
+            bad |= CBX_IEEE_SQRT;
+    return bad;
+}
+
+#if CBX_INST == 64
+/* The tight mode's EFTs exact on hard cases, and the fma two_prod calls
+ * (if it calls one) correctly rounded: double rounding, near-midpoint
+ * cancellation, a subnormal result, the sign of an exact zero. */
+static unsigned check_eft(void)
+{
+    unsigned bad = 0, i;
+    for (i = 0; i < sizeof cbx_prod_cases / sizeof cbx_prod_cases[0]; i++) {
+        cbx_dd d = cbx_two_prod(opaque(cbx_prod_cases[i][0]), opaque(cbx_prod_cases[i][1]));
+        if (!same(d.hi, cbx_prod_cases[i][2]) || !same(d.lo, cbx_prod_cases[i][3]))
+            bad |= CBX_IEEE_EFT;
+    }
+    for (i = 0; i < sizeof cbx_sum_cases / sizeof cbx_sum_cases[0]; i++) {
+        cbx_dd d = cbx_two_sum(opaque(cbx_sum_cases[i][0]), opaque(cbx_sum_cases[i][1]));
+        if (!same(d.hi, cbx_sum_cases[i][2]) || !same(d.lo, cbx_sum_cases[i][3]))
+            bad |= CBX_IEEE_EFT;
+    }
+#if !CBX_EFT_DEKKER
+    for (i = 0; i < sizeof cbx_fma_cases / sizeof cbx_fma_cases[0]; i++) {
+        cbx_fp r = CBX_FMA(opaque(cbx_fma_cases[i][0]), opaque(cbx_fma_cases[i][1]),
+                           opaque(cbx_fma_cases[i][2]));
+        if (!same(r, cbx_fma_cases[i][3]))
+            bad |= CBX_IEEE_FMA;
+    }
+#endif
+    return bad;
+}
+#endif
 
 unsigned cbx_ieee_fmt(void)
 {
@@ -102,6 +180,13 @@ unsigned cbx_ieee_fmt(void)
     r = opaque(big);
     r = cbx_sub_rn(cbx_add_rn(r, one), r);
     if (r != CBX_C(0.0)) bad |= CBX_IEEE_ASSOC;
+
+    /* what the proofs trust: sqrt correctly rounded; the EFTs exact and
+     * fma correctly rounded (binary64: the tight mode is binary64 only) */
+    bad |= check_sqrt_cases();
+#if CBX_INST == 64
+    bad |= check_eft();
+#endif
     return bad;
 }
 

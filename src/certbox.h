@@ -261,14 +261,22 @@ cbx_status cbx_motion_box(const cbx_affine *a0, const cbx_affine *a1, const cbx_
  * formats, that this build of the library computes that way: it runs known
  * cases through the library's own rounding primitives, compiled with the
  * library's flags, and returns 0 when all hold, else the CBX_IEEE_* bits of
- * the failed checks.  Call it once at start-up (a power-on self-test);
- * make check runs it.  Not part of the proven set: it tests the build. */
+ * the failed checks.  It also checks what the proofs trust: sqrt and sqrtf
+ * correctly rounded, the error-free transformations of the tight mode exact
+ * (cbx_two_sum, cbx_two_prod in the form this build selected: fma or
+ * Dekker, src/cbx_eft.h) and, where two_prod calls it, fma correctly
+ * rounded: all on hard cases (src/cbx_ieee_cases.h).  Call it once at
+ * start-up (a power-on self-test); make check runs it.  Not part of the
+ * proven set: it tests the build.  No allocation, no state. */
 #define CBX_IEEE_CONTRACT 0x01u /* a*b + c fused into an FMA (-ffp-contract=fast) */
 #define CBX_IEEE_EXCESS   0x02u /* excess precision or range (x87, FLT_EVAL_METHOD != 0) */
 #define CBX_IEEE_FTZ      0x04u /* subnormals flushed to zero (FTZ/DAZ modes) */
 #define CBX_IEEE_ROUNDING 0x08u /* a rounding mode other than to nearest */
 #define CBX_IEEE_SPECIAL  0x10u /* NaN, infinity or -0 not IEEE (-ffinite-math-only, ...) */
 #define CBX_IEEE_ASSOC    0x20u /* operations reassociated (-fassociative-math) */
+#define CBX_IEEE_FMA      0x40u /* fma not correctly rounded (builds whose two_prod calls fma) */
+#define CBX_IEEE_SQRT     0x80u /* sqrt or sqrtf not correctly rounded on hard cases */
+#define CBX_IEEE_EFT      0x100u /* two_sum or two_prod (fma or Dekker form) not exact */
 unsigned cbx_ieee_check(void);
 
 /* Human-readable name of a status ("CBX_OK", ...). */

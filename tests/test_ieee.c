@@ -8,8 +8,11 @@
  *          a nonzero expectation other bits may be set too, since one
  *          fault can fail several checks).  scripts/ieee.sh builds the library's check with bad flags
  *          (FMA contraction, reassociation, ...) and runs this with the bits
- *          each must raise, and checks that -ffast-math, -ffinite-math-only
- *          and x87 arithmetic are refused at compile time.
+ *          each must raise (an fma rounded twice, a sqrt rounded twice,
+ *          through the test hooks CBX_TEST_NAIVE_FMA / CBX_TEST_NAIVE_SQRT,
+ *          and the fma-free build CBX_NO_FMA, which must pass), and checks
+ *          that -ffast-math, -ffinite-math-only and x87 arithmetic are
+ *          refused at compile time.
  * Prints what it checked; the last line is "N passed, M failed".
  */
 #include <fenv.h>
@@ -24,12 +27,15 @@
 #define HAVE_MXCSR 1
 #endif
 
-static const char *const bit_name[] = { "contract", "excess", "ftz", "rounding", "special", "assoc" };
+/* the CBX_IEEE_* bits of certbox.h, in order */
+static const char *const bit_name[] = { "contract", "excess", "ftz", "rounding", "special", "assoc",
+                                        "fma", "sqrt", "eft" };
+#define NBITS (int)(sizeof bit_name / sizeof bit_name[0])
 
 static void print_bits(unsigned b)
 {
     int k, any = 0;
-    for (k = 0; k < 6; k++)
+    for (k = 0; k < NBITS; k++)
         if (b & (1u << k)) { printf("%s%s", any ? "," : "", bit_name[k]); any = 1; }
     if (!any) printf("none");
 }
