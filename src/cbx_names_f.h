@@ -64,6 +64,11 @@
 #define caxis_sound_s caxis_sound_s_f
 #define crow_ok crow_ok_f
 #define conv_dom conv_dom_f
+#define conv_gap conv_gap_f
+#define b2c_dom b2c_dom_f
+#define c2b_dom c2b_dom_f
+#define b2c_ok b2c_ok_f
+#define c2b_ok c2b_ok_f
 #define b2c_axis b2c_axis_f
 #define c2b_axis c2b_axis_f
 #define sq_bound_scale sq_bound_scale_f
@@ -136,6 +141,11 @@
 #undef caxis_sound_s
 #undef crow_ok
 #undef conv_dom
+#undef conv_gap
+#undef b2c_dom
+#undef c2b_dom
+#undef b2c_ok
+#undef c2b_ok
 #undef b2c_axis
 #undef c2b_axis
 #undef sq_bound_scale
