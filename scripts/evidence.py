@@ -465,7 +465,7 @@ def hashes():
 def md(pack):
     L = ['# certbox evidence pack', '',
          'Revision `%s`%s. Made by `make evidence` (scripts/evidence.py); how to re-run each part: '
-         'README.md, "Audit evidence".' % (pack['tools_and_hashes']['git_revision'],
+         'docs/evidence.md, "Audit evidence".' % (pack['tools_and_hashes']['git_revision'],
                                            '' if pack['tools_and_hashes']['working_tree_clean'] else ' (with uncommitted changes)'),
          '', 'Result: **%s**' % pack['result'], '']
     if pack['problems']:

@@ -10,7 +10,7 @@
  *   - The output box is the last argument; it is always written, whatever
  *     the status.
  *
- * Proven domain (see README.md, "Domain"): every input is finite and, for
+ * Proven domain (see docs/guide.md, "Domain"): every input is finite and, for
  * every row i and column j, the pair (m[i][j], c) with c = lo[j] and
  * c = hi[j] lies in one of the magnitude classes
  *       |m[i][j]| <= 2^k  and  |c| <= 2^(1018-k),  k in {0,64,...,960,509,1018}

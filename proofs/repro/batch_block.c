@@ -7,7 +7,7 @@
  * are copied into six local arrays (structure of arrays), the kernel runs
  * lane by lane in a loop that gcc -O2 vectorises (16-byte vectors,
  * -fopt-info-vec), and the boxes are written back with put_box.  Measured
- * (make bench's row 3b, same machine and run as the README's table): about
+ * (make bench's row 3b, same machine and run as docs/measurements.md): about
  * 1.2x classic Arvo per box with one map, against 2.45x for the per-box
  * loop; bit-identical outputs (tests/test_batch, bench's checks).
  *
