@@ -249,6 +249,11 @@ evidence-check: all $(TESTS:%=$(B)/test_%)
 smoke-teeth: check-deps-proof
 	sh scripts/smoke_teeth.sh
 
+# Do the contracts reject weakened bodies (sound but loose)?
+.PHONY: proof-teeth
+proof-teeth: check-deps-proof
+	sh scripts/proof_teeth.sh
+
 check-deps-test:
 	@sh scripts/deps.sh test
 check-deps:
@@ -272,10 +277,10 @@ check: check-deps
 	$(TIMED) ieee-check+bench-smoke+install-check+embedded+branchfree $(MAKE) -j2 ieee-check bench-smoke install-check embedded branchfree
 	$(TIMED) fuzz-check+check-cross $(MAKE) -j2 fuzz-check check-cross
 	$(TIMED) proof-check $(MAKE) proof-check
-	$(TIMED) smoke-teeth $(MAKE) smoke-teeth
+	$(TIMED) smoke-teeth+proof-teeth $(MAKE) -j2 smoke-teeth proof-teeth
 	$(TIMED) evidence-check $(MAKE) evidence-check
 	$(TIMED) clean-tree $(MAKE) clean-tree-check
-	@echo "check: 15 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, branchfree, fuzz-check, check-cross, proof-check, smoke-teeth, evidence-check, clean-tree), 0 failed"
+	@echo "check: 16 phases passed (build, header-check, test, test-san, ieee-check, bench-smoke, install-check, embedded, branchfree, fuzz-check, check-cross, proof-check, smoke-teeth, proof-teeth, evidence-check, clean-tree), 0 failed"
 
 # Is the checkout as make check found it?  (In a git work tree: git status
 # shows nothing, or only the local changes that were there before the run.)

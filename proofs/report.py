@@ -20,8 +20,10 @@ TIME = re.compile(r'\((\d+(?:\.\d+)?)(ms|s)\)')
 SMOKE = re.compile(r'^\[wp\] \[(\w+)\] Smoke-test (\S+)', re.M)
 JOBS = {
     'L64': 'binary64 lemmas', 'L32': 'binary32 lemmas',
-    'A64': 'binary64 primitives and kernels (-wp-split)',
-    'A32': 'binary32 primitives and kernels (-wp-split)',
+    'A64': 'binary64 kernels that need -wp-split',
+    'A32': 'binary32 kernels that need -wp-split',
+    'K64': 'binary64 primitives and the other kernels',
+    'K32': 'binary32 primitives and the other kernels',
     'B64a': 'binary64 tight mode, classes, motion, batch',
     'B64b': 'binary64 public functions and helpers',
     'B32': 'binary32 public functions and helpers',

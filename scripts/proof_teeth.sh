@@ -17,10 +17,13 @@ mkdir -p "$B"
 conf=$(sh proofs/setup.sh "$B/why3")
 export WHY3CONFIG="$conf"
 pass=0; fail=0
-# case NAME FILE FUNCTION TU GOAL OLD NEW: replace OLD by NEW in FILE, prove
-# FUNCTION in TU, require an unproved goal whose name contains GOAL
+# case NAME FILE FUNCTION TU PROPS GOAL OLD NEW: replace OLD by NEW in FILE,
+# prove FUNCTION in TU (only the properties PROPS, a comma list of names,
+# if not empty: every assertion after the change must be among them, or a
+# false one would serve as a hypothesis), require an unproved goal whose
+# name matches GOAL
 case_() {
-  name=$1; file=$2; fct=$3; tu=$4; goal=$5; old=$6; new=$7
+  name=$1; file=$2; fct=$3; tu=$4; props=$5; goal=$6; old=$7; new=$8
   d=$B/$name
   mkdir -p "$d"
   cp -r src specs proofs "$d"/
@@ -34,8 +37,8 @@ open(p, 'w').write(t.replace(old, new))
 PY
   fam=64; case $tu in *_f.c) fam=32;; esac
   (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
-     -wp -wp-rte -wp-split -wp-prover "cvc4r$fam,z3r$fam" -wp-timeout 10 -wp-par 2 \
-     -wp-cache none -wp-fct "$fct" > "$d/wp.log" 2>&1) || true
+     -wp -wp-rte -wp-split -wp-prover "cvc4r$fam,z3r$fam" -wp-timeout 10 -wp-par 1 \
+     -wp-cache none -wp-fct "$fct" ${props:+-wp-prop "$props"} > "$d/wp.log" 2>&1) || true
   bad=$(grep -E '^\[wp\] \[(Failed|Timeout|Unknown)\] Goal' "$d/wp.log" | sed 's/.*Goal typed_//; s/ .*//')
   if echo "$bad" | grep -q "$goal"; then
     pass=$((pass + 1))
@@ -46,15 +49,15 @@ PY
   fi
 }
 # 1. box -> cbox: the half-width doubled (still contains the box)
-case_ b2c-half-doubled src/cbx_convert.c b2c proofs/all.c tight \
+case_ b2c-half-doubled src/cbx_convert.c b2c proofs/all.c '' 'tight\|hup\|thi\|tlo' \
   "    r.b = cbx_add_rn(f, CBX_K(ETA16));" \
   "    r.b = cbx_add_rn(cbx_add_rn(f, f), CBX_K(ETA16));"
 # 2. cbox -> box: the lower end at c - 2h (binary32 family)
-case_ c2b-lo-widened src/cbx_endpoints.h cbx_c2b proofs/all_f.c tight \
+case_ c2b-lo-widened src/cbx_endpoints.h cbx_c2b proofs/all_f.c '' 'tight\|_ta\|_tb' \
   "    cbx_fp s = cbx_sub_rn(c, h);" \
   "    cbx_fp s = cbx_sub_rn(cbx_sub_rn(c, h), h);"
 # 3. the transform's kernel: the lower end widened twice
-case_ kernel-lo-widened-twice src/cbx_kernel.h cbx_end_lo proofs/all.c tight \
+case_ kernel-lo-widened-twice src/cbx_kernel.h cbx_end_lo proofs/all.c tight tight \
   "    return cbx_sub_rn(s, w);" \
   "    return cbx_sub_rn(cbx_sub_rn(s, w), w);"
 # Not yet in a contract (issue 19): these weakenings would be proved, so
