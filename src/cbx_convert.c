@@ -69,36 +69,86 @@ static void cwhole_set(cbx_cbox *out, int i)
     out->h[i] = cbx_pinf();
 }
 
+/* The input checks, each one predicate of the contract (one call in the
+ * public functions keeps their goals small). */
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> box_nan(in);
+*/
+static int box_any_nan(const cbx_box *in)
+{
+    return cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
+           || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> is_empty(in);
+*/
+static int box_any_empty(const cbx_box *in)
+{
+    return cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
+           || cbx_no_point(in->lo[2], in->hi[2]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox_nan(in);
+*/
+static int cbox_any_nan_in(const cbx_cbox *in)
+{
+    return cbx_is_nan(in->c[0]) || cbx_is_nan(in->c[1]) || cbx_is_nan(in->c[2])
+           || cbx_is_nan(in->h[0]) || cbx_is_nan(in->h[1]) || cbx_is_nan(in->h[2]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox_empty(in);
+*/
+static int cbox_any_neg(const cbx_cbox *in)
+{
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) || cbx_is_inverted(CBX_C(0.0), in->h[1])
+           || cbx_is_inverted(CBX_C(0.0), in->h[2]);
+}
+
+/* One axis of cbx_box_to_cbox: the conversion in the domain, the whole
+ * line outside it; 1 when in the domain. */
+/*@ requires \valid_read(in) && \valid(out) && \separated(in, out);
+    requires i: 0 <= i <= 2;
+    requires pt: !\is_NaN(in->lo[i]) && !\is_NaN(in->hi[i]) && !no_point(in->lo[i], in->hi[i]);
+    assigns out->c[i], out->h[i];
+    ensures ok: \result != 0 <==> b2c_dom(in, i);
+    ensures ax: b2c_axis(in, out, i);
+*/
+static int b2c_set(const cbx_box *in, cbx_cbox *out, int i)
+{
+    if (conv_ok(in->lo[i], in->hi[i])) {
+        conv_res r = b2c(in->lo[i], in->hi[i]);
+        out->c[i] = r.a;
+        out->h[i] = r.b;
+        return 1;
+    }
+    cwhole_set(out, i);
+    return 0;
+}
+
 cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
 {
-    if (cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
-        || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2])) {
+    if (box_any_nan(in)) {
         out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
         out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
         out->c[2] = CBX_C(0.0); out->h[2] = cbx_pinf();
         return CBX_EINVAL;
     }
-    if (cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
-        || cbx_no_point(in->lo[2], in->hi[2])) {
+    if (box_any_empty(in)) {
         out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
         out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
         out->c[2] = CBX_C(0.0); out->h[2] = cbx_ninf();
         return CBX_EMPTY;
     }
-    int k0 = conv_ok(in->lo[0], in->hi[0]);
-    int k1 = conv_ok(in->lo[1], in->hi[1]);
-    int k2 = conv_ok(in->lo[2], in->hi[2]);
-    /*@ assert ok: (k0 != 0 && k1 != 0 && k2 != 0) <==> b2c_ok(in); */
-    /* not inverted and finite: lo <= hi */
-    if (k0) { conv_res r = b2c(in->lo[0], in->hi[0]); out->c[0] = r.a; out->h[0] = r.b; }
-    else cwhole_set(out, 0);
-    /*@ assert ax0: b2c_axis(in, out, 0); */
-    if (k1) { conv_res r = b2c(in->lo[1], in->hi[1]); out->c[1] = r.a; out->h[1] = r.b; }
-    else cwhole_set(out, 1);
-    /*@ assert ax1: b2c_axis(in, out, 1); */
-    if (k2) { conv_res r = b2c(in->lo[2], in->hi[2]); out->c[2] = r.a; out->h[2] = r.b; }
-    else cwhole_set(out, 2);
-    /*@ assert ax2: b2c_axis(in, out, 2); */
+    int k0 = b2c_set(in, out, 0);
+    int k1 = b2c_set(in, out, 1);
+    int k2 = b2c_set(in, out, 2);
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
 }
 
@@ -113,34 +163,42 @@ static void whole_set(cbx_box *out, int i)
     out->hi[i] = cbx_pinf();
 }
 
+/* One axis of cbx_cbox_to_box: the conversion in the domain, the whole
+ * line outside it; 1 when in the domain. */
+/*@ requires \valid_read(in) && \valid(out) && \separated(in, out);
+    requires i: 0 <= i <= 2;
+    assigns out->lo[i], out->hi[i];
+    ensures ok: \result != 0 <==> c2b_dom(in, i);
+    ensures ax: c2b_axis(in, out, i);
+*/
+static int c2b_set(const cbx_cbox *in, cbx_box *out, int i)
+{
+    if (conv_ok(in->c[i], in->h[i])) {
+        conv_res r = cbx_c2b(in->c[i], in->h[i]);
+        out->lo[i] = r.a;
+        out->hi[i] = r.b;
+        return 1;
+    }
+    whole_set(out, i);
+    return 0;
+}
+
 cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
 {
-    if (cbx_is_nan(in->c[0]) || cbx_is_nan(in->c[1]) || cbx_is_nan(in->c[2])
-        || cbx_is_nan(in->h[0]) || cbx_is_nan(in->h[1]) || cbx_is_nan(in->h[2])) {
+    if (cbox_any_nan_in(in)) {
         out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
         out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
         out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
         return CBX_EINVAL;
     }
-    if (cbx_is_inverted(CBX_C(0.0), in->h[0]) || cbx_is_inverted(CBX_C(0.0), in->h[1])
-        || cbx_is_inverted(CBX_C(0.0), in->h[2])) {
+    if (cbox_any_neg(in)) {
         out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
         out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
         out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
         return CBX_EMPTY;
     }
-    int k0 = conv_ok(in->c[0], in->h[0]);
-    int k1 = conv_ok(in->c[1], in->h[1]);
-    int k2 = conv_ok(in->c[2], in->h[2]);
-    /*@ assert ok: (k0 != 0 && k1 != 0 && k2 != 0) <==> c2b_ok(in); */
-    if (k0) { conv_res r = cbx_c2b(in->c[0], in->h[0]); out->lo[0] = r.a; out->hi[0] = r.b; }
-    else whole_set(out, 0);
-    /*@ assert ax0: c2b_axis(in, out, 0); */
-    if (k1) { conv_res r = cbx_c2b(in->c[1], in->h[1]); out->lo[1] = r.a; out->hi[1] = r.b; }
-    else whole_set(out, 1);
-    /*@ assert ax1: c2b_axis(in, out, 1); */
-    if (k2) { conv_res r = cbx_c2b(in->c[2], in->h[2]); out->lo[2] = r.a; out->hi[2] = r.b; }
-    else whole_set(out, 2);
-    /*@ assert ax2: c2b_axis(in, out, 2); */
+    int k0 = c2b_set(in, out, 0);
+    int k1 = c2b_set(in, out, 1);
+    int k2 = c2b_set(in, out, 2);
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
 }
