@@ -109,13 +109,15 @@ NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjanss
 $(B)/certbox: src/scene/main.c $(SCENESRC) $(GLTFSRC) src/scene/scene.h src/scene/gltf.h $(B)/libcertbox.a $(TOOL_STAMP)
 	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
 	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) src/scene/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
-$(B)/test_gltf: tests/test_gltf.c $(GLTFSRC) src/scene/gltf.h $(B)/libcertbox.a
+# the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c)
+GLTFORACLE   := tests/gltf_oracle.c
+$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) src/scene/gltf.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
-	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Isrc/scene $< $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
-$(B)/san/test_gltf: tests/test_gltf.c $(GLTFSRC) src/scene/gltf.h $(LIBSRC) $(HEADERS)
+	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Isrc/scene $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
+$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) src/scene/gltf.h $(LIBSRC) $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Isrc/scene -Itests $< $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Isrc/scene -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests -Isrc/scene $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h

@@ -13,6 +13,10 @@
  * every matrix of the interval matrix, so under the exact product.
  */
 #define _XOPEN_SOURCE 700          /* realpath */
+/* 64-bit file offsets and inode numbers on 32-bit hosts too: without
+ * it, readdir / stat fail with EOVERFLOW on file systems with large inode
+ * numbers (armhf under qemu-user, scripts/cross.sh) */
+#define _FILE_OFFSET_BITS 64
 #include "gltf.h"
 
 #include <errno.h>
@@ -665,13 +669,38 @@ static double comp(const unsigned char *p, int ct, int j, double *den, int norm)
     }
 }
 
+long gltf_sparse_index(const gl_doc *d, int a, long s)
+{
+    const gl_acc *A = &d->accs[a];
+    double den;
+    return (long)comp(A->sp_idx + (size_t)s * (size_t)csize(A->sp_ict), A->sp_ict, 0, &den, 0);
+}
+
+long gltf_first_zero(const gl_doc *d, int a)
+{
+    const gl_acc *A = &d->accs[a];
+    if (A->base || A->sp_n >= A->count)
+        return -1;
+    /* the indices strictly increase: the first gap */
+    long lo = 0, hi = A->sp_n;                     /* index s == s below lo */
+    while (lo < hi) {
+        long m = lo + (hi - lo) / 2;
+        if (gltf_sparse_index(d, a, m) == m) lo = m + 1; else hi = m;
+    }
+    return lo;
+}
+
 void gltf_vertex(const gl_doc *d, int a, long k, double num[3], double *den)
 {
     const gl_acc *A = &d->accs[a];
     const unsigned char *p = NULL;
-    if (A->spmap && A->spmap[k] >= 0)
-        p = A->sp_val + (size_t)A->spmap[k] * 3u * (size_t)csize(A->ctype);
-    else if (A->base)
+    long lo = 0, hi = A->sp_n;                     /* binary search of k */
+    while (lo < hi) {
+        long m = lo + (hi - lo) / 2, x = gltf_sparse_index(d, a, m);
+        if (x == k) { p = A->sp_val + (size_t)m * 3u * (size_t)csize(A->ctype); break; }
+        if (x < k) lo = m + 1; else hi = m;
+    }
+    if (!p && A->base)
         p = A->base + (size_t)k * A->stride;
     *den = 1.0;
     for (int j = 0; j < 3; j++)
@@ -732,7 +761,7 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     A->base = base;
     A->stride = stride;
     if (role == 1) {
-        for (long k = 0; k < A->count; k++) {
+        for (long k = 0; base && k < A->count; k++) {      /* no bufferView: zeros */
             double den, v = base ? comp(base + (size_t)k * stride, (int)ct, 0, &den, 0) : 0.0;
             if (v >= (double)nvert)
                 return fail(c, "%s: index %.0f (element %ld) is out of range: the POSITION accessor has %lld vertices",
@@ -771,16 +800,21 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
             return fail(c, "%s: %lld indices run past the end of bufferView %lld", qi, sc, ib);
         if ((unsigned long long)vo + (unsigned long long)sc * es > vlen)
             return fail(c, "%s: %lld values run past the end of bufferView %lld", qv, sc, vb);
-        A->spmap = malloc((size_t)cnt * sizeof *A->spmap);
-        if (!A->spmap)
-            return fail(c, "out of memory");
-        for (long k = 0; k < cnt; k++) A->spmap[k] = -1;
+        /* no table of count entries (count may be 2^31 - 1 with a few
+         * bytes of data): the indices are searched (they must strictly
+         * increase, as the spec says) */
+        double prev = -1.0;
         for (long k = 0; k < sc; k++) {
             double den, ix = comp(ibase + io + (size_t)k * (size_t)csize((int)ic), (int)ic, 0, &den, 0);
             if (ix >= (double)cnt)
                 return fail(c, "%s: index %.0f out of range (count %lld)", qi, ix, cnt);
-            A->spmap[(long)ix] = k;
+            if (ix <= prev)
+                return fail(c, "%s: index %.0f (element %ld) does not strictly increase", qi, ix, k);
+            prev = ix;
         }
+        A->sp_n = (long)sc;
+        A->sp_ict = (int)ic;
+        A->sp_idx = ibase + io;
         A->sp_val = vbase + vo;
     }
     /* min / max as written */
@@ -799,9 +833,15 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     A->first_out = -1;
     if (A->no_data)
         return 0;
-    for (long k = 0; k < A->count; k++) {
+    /* with a bufferView, every vertex (count is bounded by the data);
+     * without, the sparse entries and one zero vertex standing for the
+     * count - sp_n others (gltf_first_zero) */
+    long nvis = A->base ? A->count : A->sp_n + (A->sp_n < A->count), kz = gltf_first_zero(d, (int)ai);
+    for (long e = 0; e < nvis; e++) {
         double num[3], den;
         int out = 0;
+        long k = A->base ? e : e < A->sp_n ? gltf_sparse_index(d, (int)ai, e) : kz;
+        long mult = A->base || e < A->sp_n ? 1 : A->count - A->sp_n;
         gltf_vertex(d, (int)ai, k, num, &den);
         for (int j = 0; j < 3; j++) {
             iv v = den == 1.0 ? pt(num[j]) : div_enc(num[j], den);
@@ -812,7 +852,8 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
             if (A->has_minmax && (v.lo < A->min[j] || v.hi > A->max[j])) out = 1;
         }
         if (out && A->has_minmax) {
-            if (A->outside++ == 0) A->first_out = k;
+            if (A->outside == 0 || k < A->first_out) A->first_out = k;
+            A->outside += mult;
         }
     }
     return 0;
@@ -1155,7 +1196,6 @@ void gltf_free(gl_doc *d)
     for (int k = 0; k < d->nbuf; k++) free(d->bufs[k]);
     free(d->bufs);
     free(d->nbufs);
-    for (int k = 0; k < d->na; k++) free(d->accs[k].spmap);
     free(d->accs);
     free(d->nodes);
     free(d->leaves);

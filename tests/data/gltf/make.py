@@ -54,6 +54,26 @@ write("sparse.gltf", doc([{"mesh": 0, "translation": [1, 2, 3]}],
                            "values": {"bufferView": 1}}}],
     views=[{"buffer": 0, "byteLength": 4}, {"buffer": 0, "byteOffset": 4, "byteLength": 24}],
     buffers=[{"byteLength": 28, "uri": b64(sp)}]))
+# huge sparse accessors without a bufferView (fuzz_gltf): count 2^31 - 1
+# with 28 bytes of data; read in time and memory of the sparse entries
+# (no table of count entries, no loop over the zeros)
+big = {"componentType": 5126, "count": 2147483647, "type": "VEC3",
+       "sparse": {"count": 2, "indices": {"bufferView": 0, "componentType": 5125},
+                  "values": {"bufferView": 1}}}
+spb = struct.pack("<II", 0, 2147483646) + f32(5, -6, 7, -8, 9, 0.125)
+spv = [{"buffer": 0, "byteLength": 8}, {"buffer": 0, "byteOffset": 8, "byteLength": 24}]
+write("sparse_huge.gltf", doc([{"mesh": 0}], accessors=[dict(big, min=[-8, -6, 0], max=[5, 9, 7])],
+    views=spv, buffers=[{"byteLength": 32, "uri": b64(spb)}]))
+# the same claiming min/max that leave out the 2^31 - 3 zero vertices
+write("sparse_huge_claims.gltf", doc([{"mesh": 0}], accessors=[dict(big, min=[-8, -6, 0.125], max=[5, 9, 7])],
+    views=spv, buffers=[{"byteLength": 32, "uri": b64(spb)}]))
+# sparse indices that do not strictly increase (the spec requires it)
+write("sparse_order.gltf", doc([{"mesh": 0}],
+    accessors=[{"componentType": 5126, "count": 8, "type": "VEC3", "min": [-8, -6, 0], "max": [5, 9, 7],
+                "sparse": {"count": 2, "indices": {"bufferView": 0, "componentType": 5123},
+                           "values": {"bufferView": 1}}}],
+    views=[{"buffer": 0, "byteLength": 4}, {"buffer": 0, "byteOffset": 4, "byteLength": 24}],
+    buffers=[{"byteLength": 28, "uri": b64(struct.pack("<HH", 6, 1) + f32(5, -6, 7, -8, 9, 0.125))}]))
 # KHR_mesh_quantization: normalized shorts (-32768 clamps to -1), stride 8
 q = b"".join(struct.pack("<hhhh", *v, 0) for v in [(-32768, 0, 32767), (100, -200, 300), (1, 2, 3)])
 write("quantized.gltf", doc([{"mesh": 0, "scale": [3, 3, 3], "rotation": [0, 0, 1, 1]}],
