@@ -142,14 +142,16 @@ for h in $HARNESSES; do
     rm -rf "$run"
     mkdir -p "$run/corpus"
     maxlen=256
+    dict=""
     mkdir -p "$run/tmp"         # TMPDIR of the run (fuzz_gltf's private folders)
     if [ "$h" = gltf ]; then
         maxlen=4096
+        dict=-dict=tests/fuzz/gltf.dict
         for f in $GLTF_SEEDS; do [ -f "$f" ] && cp "$f" "$run/corpus/"; done
     else
         cp tests/fuzz/corpus/"$h"/* "$run/corpus/"
     fi
-    TMPDIR=$PWD/$run/tmp $NICE "./$B/fuzz_$h" -max_total_time="$SECS" -max_len=$maxlen -timeout=20 \
+    TMPDIR=$PWD/$run/tmp $NICE "./$B/fuzz_$h" -max_total_time="$SECS" -max_len=$maxlen -timeout=20 $dict \
         -print_final_stats=1 -artifact_prefix="$run/" "$run/corpus" > "$run/log" 2>&1
     rc=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log" | tail -n 1)

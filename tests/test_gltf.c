@@ -318,6 +318,12 @@ static void run_file(const char *path, const char *label, const char *kind, cons
     size_t nn = fread(notes, 1, sizeof notes - 1, nf);
     notes[nn] = '\0';
     fclose(nf);
+    /* one line each: the file's strings are quoted with their control
+     * characters escaped (no newline inside an error or a note, no ESC) */
+    for (const char *s = err; rc != 0 && *s; s++)
+        if ((unsigned char)*s < 0x20 || *s == 0x7f) { FAIL("%s: control character 0x%02x in the error\n", label, (unsigned char)*s); break; }
+    for (const char *s = notes; *s; s++)
+        if (((unsigned char)*s < 0x20 && *s != '\n') || *s == 0x7f) { FAIL("%s: control character 0x%02x in a note\n", label, (unsigned char)*s); break; }
     if (strcmp(kind, "error") == 0) {
         if (rc == 0) { FAIL("%s: loaded, expected the error '%s'\n", label, sub); gltf_free(&d); return; }
         if (!strstr(err, sub)) FAIL("%s: error '%s' does not contain '%s'\n", label, err, sub);

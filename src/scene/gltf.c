@@ -280,29 +280,50 @@ typedef struct ctx {
     size_t nbv, nbuffers, ntex;
 } ctx;
 
+/* Messages quote the file's own strings (a uri, an extension's name, a
+ * key, jansson's "near '...'"): their control bytes (a JSON "\n" or
+ * "\u001b" decodes to one) are written as \xNN, so that an error stays one
+ * line and cannot drive the terminal.  dst gets at most n - 1 bytes. */
+static void esc_ctl(char *dst, size_t n, const char *src)
+{
+    size_t m = 0;
+    for (const unsigned char *s = (const unsigned char *)src; *s && m + 1 < n; s++) {
+        if (*s >= 0x20 && *s != 0x7f) {
+            dst[m++] = (char)*s;
+        } else {
+            if (m + 5 > n) break;
+            snprintf(dst + m, 5, "\\x%02x", *s);
+            m += 4;
+        }
+    }
+    dst[m] = '\0';
+}
+
 /* "FILE: msg" (msg names the JSON pointer or the byte) */
 static int fail(ctx *c, const char *fmt, ...)
 {
-    char msg[400];
+    char msg[400], e[400];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(c->err, c->errlen, "%s: %s", c->path, msg);
+    esc_ctl(e, sizeof e, msg);
+    snprintf(c->err, c->errlen, "%s: %s", c->path, e);
     return -1;
 }
 
 static void note(ctx *c, const char *fmt, ...)
 {
+    char msg[400], e[400];
     c->d->notes++;
     if (!c->notes)
         return;
     va_list ap;
     va_start(ap, fmt);
-    fprintf(c->notes, "%s: note: ", c->path);
-    vfprintf(c->notes, fmt, ap);
-    fputc('\n', c->notes);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    esc_ctl(e, sizeof e, msg);
+    fprintf(c->notes, "%s: note: %s\n", c->path, e);
 }
 
 static int read_all(const char *path, unsigned char **out, size_t *n)
@@ -1142,7 +1163,9 @@ static int parse_json(ctx *c, const unsigned char *txt, size_t n, const char *wh
     json_error_t je;
     c->root = json_loadb((const char *)txt, n, JSON_REJECT_DUPLICATES, &je);
     if (!c->root) {
-        snprintf(c->err, c->errlen, "%s:%d:%d: %s%s", c->path, je.line, je.column, where, je.text);
+        char e[sizeof je.text];
+        esc_ctl(e, sizeof e, je.text);
+        snprintf(c->err, c->errlen, "%s:%d:%d: %s%s", c->path, je.line, je.column, where, e);
         return -1;
     }
     if (!json_is_object(c->root))

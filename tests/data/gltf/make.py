@@ -139,6 +139,9 @@ write("matrix_proj.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0.5, 0, 1, 0, 0, 
 write("matrix_trs.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "scale": [1, 1, 1]}]))
 write("quat_zero.gltf", doc([{"mesh": 0, "rotation": [0, 0, 0, 0]}]))
 write("ext_required.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_meshopt_compression"]))
+# the file's strings in a message (fuzz_gltf): control characters escaped,
+# the error stays one line and sends no escape sequence to the terminal
+write("ctl_chars.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_a\nb\u001b[2J"]))
 write("no_scene.gltf", doc([{"mesh": 0}], scenes=[]))
 write("version1.gltf", dict(doc([{"mesh": 0}]), asset={"version": "1.0"}))
 # claims: vertices outside min/max (flagged), NaN / infinite positions (flagged)
