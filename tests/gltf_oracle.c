@@ -150,8 +150,18 @@ long gx_check_leaf(const gl_doc *d, const gl_leaf *L, const cbx_box *b, const gx
         if (skip_outside && A->outside) {
             /* flagged accessor with min/max boxes: only claim-abiding vertices */
             int in = 1;
-            for (int j = 0; j < 3; j++)
-                in &= !isnan(num[j]) && num[j] / den >= A->min[j] && num[j] / den <= A->max[j];
+            for (int j = 0; j < 3 && in; j++) {
+                if (isnan(num[j])) { in = 0; break; }
+                if (isinf(num[j])) { in = num[j] >= A->min[j] && num[j] <= A->max[j]; continue; }
+                /* exactly: num / den rounded could land inside min/max
+                 * when the exact fraction does not */
+                mpq_set_d(y, num[j]);
+                if (den != 1.0) { mpq_set_d(t, den); mpq_div(y, y, t); }
+                mpq_set_d(t, A->min[j]);
+                in = mpq_cmp(y, t) >= 0;
+                mpq_set_d(t, A->max[j]);
+                in = in && mpq_cmp(y, t) <= 0;
+            }
             if (!in) continue;
         }
         int inf = 0;

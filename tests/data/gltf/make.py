@@ -82,6 +82,15 @@ write("quantized.gltf", doc([{"mesh": 0, "scale": [3, 3, 3], "rotation": [0, 0, 
     views=[{"buffer": 0, "byteLength": 24, "byteStride": 8}],
     buffers=[{"byteLength": 24, "uri": b64(q)}],
     extensionsUsed=["KHR_mesh_quantization"], extensionsRequired=["KHR_mesh_quantization"]))
+# a normalized vertex 33/255 whose min is the double nearest 33/255, which
+# is above it: the vertex lies outside min/max (flagged), though 33.0 / 255
+# rounded lands on min (the oracle compares the exact fraction)
+write("claims_norm.gltf", doc([{"mesh": 0}],
+    accessors=[{"bufferView": 0, "componentType": 5121, "normalized": True, "count": 2, "type": "VEC3",
+                "min": [33 / 255] * 3, "max": [1, 1, 1]}],
+    views=[{"buffer": 0, "byteLength": 8, "byteStride": 4}],
+    buffers=[{"byteLength": 8, "uri": b64(bytes([33, 33, 33, 0, 255, 255, 255, 0]))}],
+    extensionsUsed=["KHR_mesh_quantization"], extensionsRequired=["KHR_mesh_quantization"]))
 write("overflow.gltf", doc([{"children": [1], "scale": [1e300, 1, 1]}, {"mesh": 0, "scale": [1e10, 1, 1]}]))
 write("two_scenes.gltf", doc([{"mesh": 0}, {"mesh": 0, "translation": [5, 0, 0]}],
     scenes=[{"nodes": [0]}, {"nodes": [1, 0]}]))
