@@ -1305,7 +1305,8 @@ static int load(ctx *c)
     }
     d->ns = (int)ns;
     int *stack = malloc((nn + 1) * sizeof *stack);
-    if (!stack) { free(checked); return fail(c, "out of memory"); }
+    size_t *listed = calloc(nn + 1, sizeof *listed);   /* scene s + 1 that lists the root */
+    if (!stack || !listed) { free(stack); free(listed); free(checked); return fail(c, "out of memory"); }
     int rc = 0;
     for (size_t s = 0; s < ns && rc == 0; s++) {
         json_t *S = json_array_get(scenes, s), *roots;
@@ -1325,6 +1326,14 @@ static int load(ctx *c)
                 break;
             }
             int root = (int)json_integer_value(v);
+            /* the spec's uniqueItems: a root listed twice would bound
+             * its subtree twice (n roots listing one mesh of n primitives:
+             * n^2 instances from a file of size n) */
+            if (listed[root] == s + 1) {
+                rc = fail(c, "%s/nodes/%zu: node %d is listed twice", p, r, root);
+                break;
+            }
+            listed[root] = s + 1;
             if (d->nodes[root].parent >= 0) {
                 rc = fail(c, "%s/nodes/%zu: node %d is not a root (it is a child of node %d)", p, r, root, d->nodes[root].parent);
                 break;
@@ -1362,6 +1371,7 @@ static int load(ctx *c)
             note(c, "%s: the scene has no mesh instance", p);
     }
     free(stack);
+    free(listed);
     free(checked);
     return rc;
 }

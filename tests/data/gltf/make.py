@@ -112,6 +112,9 @@ open("cube.glb", "wb").write(glb(gdoc, cube))
 write("cycle.gltf", doc([{"mesh": 0}, {"children": [2]}, {"children": [1]}]))
 write("two_parents.gltf", doc([{"children": [2]}, {"children": [2]}, {"mesh": 0}], scenes=[{"nodes": [0, 1]}]))
 write("self_child.gltf", doc([{"children": [0], "mesh": 0}]))
+# a scene root listed twice (the spec's uniqueItems; fuzz_gltf: n roots
+# listing a mesh of n primitives made n^2 mesh instances)
+write("root_twice.gltf", doc([{"mesh": 0}, {"mesh": 0}], scenes=[{"nodes": [1, 0, 1]}]))
 write("not_root.gltf", doc([{"children": [1]}, {"mesh": 0}], scenes=[{"nodes": [1]}]))
 acc = lambda **k: [dict({"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
                          "min": [-1, -2, -0.25], "max": [1, 0.5, 3]}, **k)]
