@@ -18,7 +18,8 @@
 #   make proof-report  copy that report to the committed proofs/report.md
 #   make evidence the evidence pack for an assessor, in build/evidence/
 #   make mutants  mutation check: deliberate faults must all be caught
-#   make fuzz     libFuzzer harnesses with the exact oracle (60 s each)
+#   make fuzz     libFuzzer harnesses with the exact oracle (60 s each; the
+#                 glTF reader's only with jansson)
 
 VERSION   := 0.1.0
 SOVERSION := 0
@@ -181,7 +182,8 @@ embedded:
 	python3 scripts/embedded.py
 
 # The exact test suites on 32-bit ARM under qemu-user, output compared line
-# by line with this machine's (scripts/cross.sh).
+# by line with this machine's (scripts/cross.sh); test_gltf with the armhf
+# jansson (skipped with a message without it).
 check-cross: $(TESTS:%=$(B)/test_%)
 	@sh scripts/deps.sh cross
 	sh scripts/cross.sh

@@ -8,6 +8,9 @@
 # build check on ARM: cbx_ieee_check() == 0, and a build of its sources in
 # GCC's default GNU mode for a VFPv4 CPU (which has fused multiply-add and
 # contracts a*b+c there) must be caught.
+# test_gltf (the scene tool's glTF reader) too when jansson is there for
+# both (host and armhf: sh scripts/deps.sh cross), skipped with a message
+# otherwise.
 # Usage: sh scripts/cross.sh  (run from the checkout's root, after make all)
 set -eu
 XCC=${XCC:-arm-linux-gnueabihf-gcc}
@@ -46,7 +49,7 @@ for s in $SUITES; do
     $XCC $F $G src/scene/main.c src/scene/scene.c src/scene/gltf.c $LIB -static -ljansson -lm -o $B/certbox
     ./build/test_gltf $GLTFDIR tests/data/gltf build/certbox "$GLTF_N" > $B/$name.host.txt 2>&1 || true
     $QEMU $B/test_gltf $GLTFDIR tests/data/gltf "$QEMU $B/certbox" "$GLTF_N" > $B/$name.arm.txt 2>&1 || true
-    args="$GLTFDIR tests/data/gltf CERTBOX $GLTF_N"
+    args="$GLTFDIR tests/data/gltf build/certbox $GLTF_N (ARM: $QEMU $B/certbox)"
   else
   # shellcheck disable=SC2086
   $XCC $F tests/test_$name.c tests/exact_util.c $LIB -static -lmpfr -lgmp -lm -o $B/test_$name
