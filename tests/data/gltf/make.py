@@ -54,7 +54,7 @@ write("sparse.gltf", doc([{"mesh": 0, "translation": [1, 2, 3]}],
                            "values": {"bufferView": 1}}}],
     views=[{"buffer": 0, "byteLength": 4}, {"buffer": 0, "byteOffset": 4, "byteLength": 24}],
     buffers=[{"byteLength": 28, "uri": b64(sp)}]))
-# huge sparse accessors without a bufferView (fuzz_gltf): count 2^31 - 1
+# huge sparse accessors without a bufferView: count 2^31 - 1
 # with 28 bytes of data; read in time and memory of the sparse entries
 # (no table of count entries, no loop over the zeros)
 big = {"componentType": 5126, "count": 2147483647, "type": "VEC3",
@@ -112,7 +112,7 @@ open("cube.glb", "wb").write(glb(gdoc, cube))
 write("cycle.gltf", doc([{"mesh": 0}, {"children": [2]}, {"children": [1]}]))
 write("two_parents.gltf", doc([{"children": [2]}, {"children": [2]}, {"mesh": 0}], scenes=[{"nodes": [0, 1]}]))
 write("self_child.gltf", doc([{"children": [0], "mesh": 0}]))
-# a scene root listed twice (the spec's uniqueItems; fuzz_gltf: n roots
+# a scene root listed twice (the spec's uniqueItems; n roots
 # listing a mesh of n primitives made n^2 mesh instances)
 write("root_twice.gltf", doc([{"mesh": 0}, {"mesh": 0}], scenes=[{"nodes": [1, 0, 1]}]))
 write("not_root.gltf", doc([{"children": [1]}, {"mesh": 0}], scenes=[{"nodes": [1]}]))
@@ -151,7 +151,7 @@ write("matrix_proj.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0.5, 0, 1, 0, 0, 
 write("matrix_trs.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "scale": [1, 1, 1]}]))
 write("quat_zero.gltf", doc([{"mesh": 0, "rotation": [0, 0, 0, 0]}]))
 write("ext_required.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_meshopt_compression"]))
-# the file's strings in a message (fuzz_gltf): control characters escaped,
+# the file's strings in a message: control characters escaped,
 # the error stays one line and sends no escape sequence to the terminal
 write("ctl_chars.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_a\nb\u001b[2J"]))
 write("no_scene.gltf", doc([{"mesh": 0}], scenes=[]))
