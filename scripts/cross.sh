@@ -9,6 +9,9 @@
 # build check on ARM: cbx_ieee_check() == 0, and a build of its sources in
 # GCC's default GNU mode for a VFPv4 CPU (which has fused multiply-add and
 # contracts a*b+c there) must be caught.
+# test_gltf (the scene tool's glTF reader) too when jansson is there for
+# both (host and armhf: sh scripts/deps.sh cross), skipped with a message
+# otherwise.
 # Usage: sh scripts/cross.sh  (run from the checkout's root, after make all)
 set -eu
 XCC=${XCC:-arm-linux-gnueabihf-gcc}
@@ -24,16 +27,42 @@ SUITES=${CROSS_SUITES:-"badinput: special: exact:200000,1 float:50000,1 cbox:300
 pass=0; fail=0
 echo "cross: $($XCC --version | head -1); $($QEMU --version | head -1)"
 start=$(date +%s)
+# test_gltf (the scene tool's glTF reader, tests/test_gltf.c): built with
+# the armhf jansson (static), on the same files; the tool it runs is the
+# ARM build of build/certbox, itself under qemu.  Skipped with a message
+# (not a failure) without jansson on the host or for armhf.
+GLTFDIR=/usr/share/assimp/models/glTF2
+GLTF_N=${CROSS_GLTF_N:-20000}
+if [ -z "${CROSS_SUITES:-}" ]; then
+  if ! pkg-config --exists jansson 2>/dev/null || [ ! -f /usr/lib/arm-linux-gnueabihf/libjansson.a ]; then
+    echo "cross: skip test_gltf: jansson missing (libjansson-dev on the host, libjansson-dev:armhf: sh scripts/deps.sh cross)"
+  elif [ ! -d $GLTFDIR ]; then
+    echo "cross: skip test_gltf: $GLTFDIR missing (assimp-testmodels: sh scripts/deps.sh test)"
+  else
+    SUITES="$SUITES gltf:"
+  fi
+fi
 for s in $SUITES; do
   name=${s%%:*}; args=$(echo "${s#*:}" | tr ',' ' ')
   src=$name; extra=""
   case $name in *_nofma) src=${name%_nofma}; extra=-DCBX_NO_FMA ;; esac
+  if [ "$name" = gltf ]; then
+    G="-DCBX_GLTF -Isrc/scene"
+    # shellcheck disable=SC2086
+    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c src/scene/gltf.c $LIB -static -ljansson -lgmp -lm -o $B/test_gltf
+    # shellcheck disable=SC2086
+    $XCC $F $G src/scene/main.c src/scene/scene.c src/scene/gltf.c $LIB -static -ljansson -lm -o $B/certbox
+    ./build/test_gltf $GLTFDIR tests/data/gltf build/certbox "$GLTF_N" > $B/$name.host.txt 2>&1 || true
+    $QEMU $B/test_gltf $GLTFDIR tests/data/gltf "$QEMU $B/certbox" "$GLTF_N" > $B/$name.arm.txt 2>&1 || true
+    args="$GLTFDIR tests/data/gltf build/certbox $GLTF_N (ARM: $QEMU $B/certbox)"
+  else
   # shellcheck disable=SC2086
   $XCC $F $extra tests/test_$src.c tests/exact_util.c $LIB -static -lmpfr -lgmp -lm -o $B/test_$name
   # shellcheck disable=SC2086
   ./build/test_$name $args > $B/$name.host.txt 2>&1 || true
   # shellcheck disable=SC2086
   $QEMU $B/test_$name $args > $B/$name.arm.txt 2>&1 || true
+  fi
   # durations are the only thing allowed to differ
   T='s/[0-9]+(\.[0-9]+)? ?(s|ms|seconds)\b/<time>/g'
   grep -v -i 'cpu time' $B/$name.host.txt | sed -E "$T" > $B/$name.host.cmp || true

@@ -9,7 +9,7 @@
 #   fuzz      + clang and its libFuzzer/sanitizer runtimes
 #   bench     + gnuplot-nox (make bench draws its plot)
 #   embedded  + arm-none-eabi-gcc (make embedded: Cortex-M4F/M7, freestanding)
-#   cross     + the armhf cross compiler, armhf GMP/MPFR and qemu-user
+#   cross     + the armhf cross compiler, armhf GMP/MPFR/jansson and qemu-user
 #               (make check-cross; adds the armhf architecture to dpkg)
 #   evidence  + gcovr, cppcheck, clang-tidy (make evidence)
 #   all       everything make check uses (all of the above but bench)
@@ -58,6 +58,8 @@ if is cross; then
   have arm-linux-gnueabihf-gcc || need="$need gcc-arm-linux-gnueabihf libc6-dev-armhf-cross"
   [ -f /usr/lib/arm-linux-gnueabihf/libgmp.a ] || { need="$need libgmp-dev:armhf"; armhf=1; }
   [ -f /usr/lib/arm-linux-gnueabihf/libmpfr.a ] || { need="$need libmpfr-dev:armhf"; armhf=1; }
+  # test_gltf under qemu: the tool's JSON parser, static
+  [ -f /usr/lib/arm-linux-gnueabihf/libjansson.a ] || { need="$need libjansson-dev:armhf"; armhf=1; }
   have qemu-arm || need="$need qemu-user"
 fi
 if is evidence; then

@@ -65,7 +65,17 @@ SUITES = [
     ('classes', ['20000', '1']), ('float', ['50000', '1']), ('ieee', []),
     ('ieee', ['ftz', '4']), ('ieee', ['ftzonly', '4']), ('ieee', ['daz', '4']), ('ieee', ['up', '8']), ('ieee', ['down', '8']), ('ieee', ['zero', '8']),
     ('scene', sorted(glob.glob(os.path.join(ROOT, 'examples', '*.scene')))),
+    # the scene tool's glTF reader (src/scene/gltf.c), against GMP, on
+    # assimp-testmodels and tests/data/gltf; it runs the tool build/certbox
+    ('gltf', ['/usr/share/assimp/models/glTF2', 'tests/data/gltf', 'build/certbox', '20000']),
 ]
+# test_gltf needs jansson (the tool's optional dependency; scripts/deps.sh
+# test installs it): without it the suite is not run and the pack fails
+HAVE_JANSSON = subprocess.run(['pkg-config', '--exists', 'jansson']).returncode == 0
+
+
+def jansson_flags(kind):
+    return subprocess.run(['pkg-config', kind, 'jansson'], capture_output=True, text=True).stdout.split()
 
 
 def run_name(i):
@@ -219,6 +229,11 @@ def tests(raw):
     os.makedirs(os.path.join(raw, 'tests'), exist_ok=True)
     for i, (name, args) in enumerate(SUITES):
         exe = os.path.join(ROOT, 'build', 'test_' + name)
+        if name == 'gltf':
+            if not HAVE_JANSSON:
+                failures.append('tests: jansson (libjansson-dev) not found: test_gltf not run (scripts/deps.sh test)')
+                continue
+            sh(['make', '-s', 'build/certbox'])
         sh(['make', '-s', 'build/test_' + name])
         r = sh([exe] + args, check=False)
         text = r.stdout + r.stderr
@@ -266,10 +281,23 @@ def coverage(raw, b):
         sh([CC] + FLAGS + ['-O0', '-Isrc', '-Isrc/scene', '-c', s, '-o', o])
         scene.append(o)
     same = []
+    gltf = []
+    if HAVE_JANSSON:
+        # the glTF reader and test_gltf's oracle (not measured: src/scene is
+        # left out below, like scene.c)
+        for s, o in [('src/scene/gltf.c', 'gltf.o'), ('tests/gltf_oracle.c', 'gltf_oracle.o')]:
+            o = os.path.join(b, 'obj', o)
+            sh([CC] + FLAGS + ['-O0', '-DCBX_GLTF'] + jansson_flags('--cflags')
+               + ['-Isrc', '-Isrc/scene', '-Itests', '-c', s, '-o', o])
+            gltf.append(o)
     for i, (name, args) in enumerate(SUITES):
         exe = os.path.join(b, 'test_' + name)
+        if name == 'gltf' and not HAVE_JANSSON:
+            continue
         if not os.path.exists(exe):
             extra = scene + ['-Isrc/scene'] if name == 'scene' else []
+            if name == 'gltf':
+                extra = gltf + ['-DCBX_GLTF', '-Isrc/scene'] + jansson_flags('--cflags') + jansson_flags('--libs')
             sh([CC] + FLAGS + ['-O0', '--coverage', '-Isrc', '-Itests', 'tests/test_%s.c' % name,
                                'tests/exact_util.c'] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
         r = sh([exe] + args, check=False)

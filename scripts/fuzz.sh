@@ -5,7 +5,16 @@
 #
 # SECONDS: time per harness (default 60), passed to -max_total_time.
 # HARNESS: any of transform_box transform_cbox box_to_cbox cbox_to_box
-#          sphere_box ellipsoid_box (default: all six, one after the other).
+#          sphere_box ellipsoid_box gltf (default: all seven, one after the
+#          other).
+#
+# gltf (tests/fuzz/fuzz_gltf.c): the scene tool's glTF reader
+# (src/scene/gltf.c) on arbitrary file contents, against the exact oracle
+# of test_gltf (tests/gltf_oracle.c); it needs jansson (pkg-config
+# jansson): without it that harness is skipped with a message (not a
+# failure).  Its seeds are files of tests/data/gltf/ and small models of
+# /usr/share/assimp/models/glTF2/ (assimp-testmodels; those absent are
+# skipped), copied to its scratch corpus; inputs up to 4096 bytes.
 #
 # Each harness (tests/fuzz/fuzz_<name>.c) is built with clang
 # -fsanitize=fuzzer,address,undefined, linking the library sources src/*.c
@@ -30,7 +39,18 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT" || exit 2
 SECS=${1:-60}
 [ $# -gt 0 ] && shift
-ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box"
+ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box gltf"
+GLTFDIR=/usr/share/assimp/models/glTF2
+# the gltf harness's seeds (self-contained files: GLB, data: URIs; and a few
+# refused ones)
+GLTF_SEEDS="tests/data/gltf/cube.glb tests/data/gltf/trs.gltf tests/data/gltf/matrix.gltf
+ tests/data/gltf/sparse.gltf tests/data/gltf/quantized.gltf tests/data/gltf/interleaved.gltf
+ tests/data/gltf/two_scenes.gltf tests/data/gltf/overflow.gltf tests/data/gltf/nan_inf.gltf
+ tests/data/gltf/claims.gltf tests/data/gltf/cycle.gltf tests/data/gltf/glb_nobin.glb
+ $GLTFDIR/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb
+ $GLTFDIR/BoxBadNormals-glTF-Binary/BoxBadNormals.glb
+ $GLTFDIR/RecursiveNodes/RecursiveNodes.gltf $GLTFDIR/cameras/Cameras.gltf
+ $GLTFDIR/TestNoRootNode/SceneWithoutNodes.gltf"
 HARNESSES=${*:-$ALL}
 B=build/fuzz
 NICE="nice -n 19"
@@ -89,7 +109,24 @@ sh scripts/deps.sh test >/dev/null || { echo "fuzz: GMP/MPFR headers unavailable
 # ---- build ---------------------------------------------------------------
 CFLAGS="-std=c99 -O1 -g -Wall -Wextra -ffp-contract=off -fno-fast-math \
  -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+HAVE_JANSSON=0
+pkg-config --exists jansson 2>/dev/null && HAVE_JANSSON=1
+SKIPPED=""
 for h in $HARNESSES; do
+    if [ "$h" = gltf ]; then
+        if [ $HAVE_JANSSON = 0 ]; then
+            echo "fuzz: jansson (libjansson-dev) not found: the gltf harness is skipped" >&2
+            SKIPPED="$SKIPPED gltf"
+            continue
+        fi
+        echo "fuzz: building $B/fuzz_$h" >&2
+        # shellcheck disable=SC2046,SC2086
+        $NICE "$CLANG" $CFLAGS -DCBX_GLTF $(pkg-config --cflags jansson) -Isrc -Isrc/scene -Itests \
+            tests/fuzz/fuzz_gltf.c tests/gltf_oracle.c src/scene/gltf.c src/*.c \
+            $(pkg-config --libs jansson) -lgmp -lm -o "$B/fuzz_$h" \
+            || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
+        continue
+    fi
     echo "fuzz: building $B/fuzz_$h" >&2
     # shellcheck disable=SC2086
     $NICE "$CLANG" $CFLAGS -Isrc -Itests "tests/fuzz/fuzz_$h.c" src/*.c tests/exact_util.c \
@@ -100,11 +137,21 @@ done
 bad=0
 printf '%-16s %12s %8s %8s  %s\n' harness executions corpus crashes result
 for h in $HARNESSES; do
+    case " $SKIPPED " in *" $h "*) printf '%-16s %12s %8s %8s  %s\n' "$h" - - - "skipped (no jansson)"; continue;; esac
     run=$B/run/$h
     rm -rf "$run"
     mkdir -p "$run/corpus"
-    cp tests/fuzz/corpus/"$h"/* "$run/corpus/"
-    $NICE "./$B/fuzz_$h" -max_total_time="$SECS" -max_len=256 -timeout=20 \
+    maxlen=256
+    dict=""
+    mkdir -p "$run/tmp"         # TMPDIR of the run (fuzz_gltf's private folders)
+    if [ "$h" = gltf ]; then
+        maxlen=4096
+        dict=-dict=tests/fuzz/gltf.dict
+        for f in $GLTF_SEEDS; do [ -f "$f" ] && cp "$f" "$run/corpus/"; done
+    else
+        cp tests/fuzz/corpus/"$h"/* "$run/corpus/"
+    fi
+    TMPDIR=$PWD/$run/tmp $NICE "./$B/fuzz_$h" -max_total_time="$SECS" -max_len=$maxlen -timeout=20 $dict \
         -print_final_stats=1 -artifact_prefix="$run/" "$run/corpus" > "$run/log" 2>&1
     rc=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$run/log" | tail -n 1)

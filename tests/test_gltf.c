@@ -26,8 +26,13 @@
  * Exit 1 on any failure.
  */
 #define _XOPEN_SOURCE 700
+/* 64-bit file offsets and inode numbers on 32-bit hosts too: without
+ * it, readdir / stat fail with EOVERFLOW on file systems with large inode
+ * numbers (armhf under qemu-user, scripts/cross.sh) */
+#define _FILE_OFFSET_BITS 64
 #include <dirent.h>
 #include <float.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <gmp.h>
 #include <math.h>
@@ -37,129 +42,33 @@
 #include <sys/stat.h>
 #include <time.h>
 #include "gltf.h"
+#include "gltf_oracle.h"
 
-typedef struct qmap { mpq_t m[3][4]; int done; } qmap;   /* y = M x + T */
 
 static long n_fail;
 /* counts every failure, prints the first 50 */
 #define FAIL(...) do { if (++n_fail <= 50) fprintf(stderr, "FAIL " __VA_ARGS__); } while (0)
 
-static void qm_init(qmap *q)
+/* the oracle's failures (gltf_oracle.c), counted and printed as FAIL's */
+static void report(const char *fmt, ...)
 {
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            mpq_init(q->m[i][j]);
-    q->done = 0;
-}
-static void qm_clear(qmap *q)
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            mpq_clear(q->m[i][j]);
-}
-
-/* The node's exact local map from the numbers the reader kept. */
-static void qm_local(qmap *L, const gl_node *g)
-{
-    if (g->has_matrix) {
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 4; j++)
-                mpq_set_d(L->m[i][j], g->matrix[4 * j + i]);
+    va_list ap;
+    if (++n_fail > 50)
         return;
-    }
-    mpq_t x, y, z, w, n, t, u, R[3][3];
-    mpq_inits(x, y, z, w, n, t, u, NULL);
-    mpq_set_d(x, g->r[0]); mpq_set_d(y, g->r[1]); mpq_set_d(z, g->r[2]); mpq_set_d(w, g->r[3]);
-    mpq_t *q[4] = {&x, &y, &z, &w};
-    mpq_set_ui(n, 0, 1);
-    for (int k = 0; k < 4; k++) { mpq_mul(t, *q[k], *q[k]); mpq_add(n, n, t); }
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            mpq_init(R[i][j]);
-    /* diagonal: w^2 + a^2 - b^2 - c^2 for axis a */
-    mpq_t *ax[3] = {&x, &y, &z};
-    for (int i = 0; i < 3; i++) {
-        mpq_mul(t, w, w);
-        for (int k = 0; k < 3; k++) {
-            mpq_mul(u, *ax[k], *ax[k]);
-            if (k == i) mpq_add(t, t, u); else mpq_sub(t, t, u);
-        }
-        mpq_set(R[i][i], t);
-    }
-    /* off-diagonal: 2(ab -+ wc) */
-    static const int pa[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
-    for (int k = 0; k < 3; k++) {
-        int a = pa[k][0], b = pa[k][1], c = pa[k][2];   /* (a, b) with c the third */
-        mpq_mul(t, *ax[a], *ax[b]);
-        mpq_mul(u, w, *ax[c]);
-        mpq_sub(R[a][b], t, u);
-        mpq_add(R[b][a], t, u);
-        mpq_add(R[a][b], R[a][b], R[a][b]);
-        mpq_add(R[b][a], R[b][a], R[b][a]);
-    }
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            mpq_div(t, R[i][j], n);
-            mpq_set_d(u, g->s[j]);
-            mpq_mul(L->m[i][j], t, u);
-        }
-        mpq_set_d(L->m[i][3], g->t[i]);
-    }
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            mpq_clear(R[i][j]);
-    mpq_clears(x, y, z, w, n, t, u, NULL);
+    fputs("FAIL ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
 }
 
-/* r = a o b (b first) */
-static void qm_compose(qmap *r, const qmap *a, const qmap *b)
-{
-    mpq_t t;
-    mpq_init(t);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++) {
-            if (j == 3) mpq_set(r->m[i][j], a->m[i][3]); else mpq_set_ui(r->m[i][j], 0, 1);
-            for (int k = 0; k < 3; k++) {
-                mpq_mul(t, a->m[i][k], b->m[k][j]);
-                mpq_add(r->m[i][j], r->m[i][j], t);
-            }
-        }
-    mpq_clear(t);
-}
-
-/* exact world maps, memoised per node */
-static const qmap *world(const gl_doc *d, qmap *W, int k)
-{
-    if (W[k].done)
-        return &W[k];
-    qmap L;
-    qm_init(&L);
-    qm_local(&L, &d->nodes[k]);
-    if (d->nodes[k].parent < 0) {
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 4; j++)
-                mpq_set(W[k].m[i][j], L.m[i][j]);
-    } else {
-        qm_compose(&W[k], world(d, W, d->nodes[k].parent), &L);
-    }
-    qm_clear(&L);
-    W[k].done = 1;
-    return &W[k];
-}
 
 typedef struct stats {
-    long files, loaded, refused, flagged, instances, vertices, corners, inf_checks, teeth, imat_fin, imat_inf;
+    long files, loaded, refused, flagged, instances, teeth, imat_fin, imat_inf;
+    gx_counts c;                        /* vertices, corners, infinite ends checked */
     double round_mm, round_v;           /* max relative excess over the exact image of the box mapped */
     double excess_mm, excess_v;         /* ... over the exact hull of the mapped vertices */
 } stats;
 
-/* y outside [b->lo[i], b->hi[i]] (an infinite end holds everything) */
-static int outside(const mpq_t y, const cbx_box *b, int i, mpq_t tmp)
-{
-    if (isfinite(b->lo[i])) { mpq_set_d(tmp, b->lo[i]); if (mpq_cmp(y, tmp) < 0) return 1; }
-    if (isfinite(b->hi[i])) { mpq_set_d(tmp, b->hi[i]); if (mpq_cmp(y, tmp) > 0) return 1; }
-    return 0;
-}
 
 /* relative excess of box end e over the exact bound x (sign: outward) */
 static double excess(double e, const mpq_t x, double scale, int upper)
@@ -174,96 +83,9 @@ static double excess(double e, const mpq_t x, double scale, int upper)
     return r;
 }
 
-/* Check leaf L's box `b` against the exact vertices (and min/max corners
- * if corners).  Returns the failures; fills the exact hull and image. */
-static long check_leaf(const gl_doc *d, const gl_leaf *L, const cbx_box *b, const qmap *W, int corners,
-                       int skip_outside, stats *st, const char *file, int quiet, mpq_t hlo[3], mpq_t hhi[3], int *nh)
-{
-    const gl_acc *A = &d->accs[L->acc];
-    long fails = 0;
-    mpq_t v[3], y, t, tmp;
-    for (int j = 0; j < 3; j++) mpq_init(v[j]);
-    mpq_inits(y, t, tmp, NULL);
-    *nh = 0;
-    if (L->st == CBX_EINVAL) {            /* NaN met: the box must be the whole space */
-        for (int i = 0; i < 3; i++)
-            if (b->lo[i] != -HUGE_VAL || b->hi[i] != HUGE_VAL) {
-                fails++;
-                if (!quiet) FAIL("%s: leaf %s: CBX_EINVAL but not the whole space\n", file, L->path);
-            }
-        goto done;
-    }
-    for (long k = 0; !A->no_data && k < A->count; k++) {
-        double num[3], den;
-        gltf_vertex(d, L->acc, k, num, &den);
-        if (skip_outside && A->outside) {
-            /* flagged accessor with min/max boxes: only claim-abiding vertices */
-            int in = 1;
-            for (int j = 0; j < 3; j++)
-                in &= !isnan(num[j]) && num[j] / den >= A->min[j] && num[j] / den <= A->max[j];
-            if (!in) continue;
-        }
-        int inf = 0;
-        for (int j = 0; j < 3; j++) {
-            if (isnan(num[j])) goto next;  /* only with a CBX_EINVAL leaf (above) */
-            inf |= isinf(num[j]);
-        }
-        if (inf) {                          /* the end it pushes must be infinite */
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 3; j++) {
-                    int s = mpq_sgn(W->m[i][j]) * (num[j] > 0 ? 1 : -1);
-                    if (!isinf(num[j]) || s == 0) continue;
-                    st->inf_checks++;
-                    if ((s > 0 && b->hi[i] != HUGE_VAL) || (s < 0 && b->lo[i] != -HUGE_VAL)) {
-                        fails++;
-                        if (!quiet) FAIL("%s: leaf %s vertex %ld: infinite coordinate, finite end on axis %d\n",
-                                         file, L->path, k, i);
-                    }
-                }
-            continue;
-        }
-        for (int j = 0; j < 3; j++) {
-            mpq_set_d(v[j], num[j]);
-            if (den != 1.0) { mpq_set_d(t, den); mpq_div(v[j], v[j], t); }
-        }
-        st->vertices++;
-        for (int i = 0; i < 3; i++) {
-            mpq_set(y, W->m[i][3]);
-            for (int j = 0; j < 3; j++) { mpq_mul(t, W->m[i][j], v[j]); mpq_add(y, y, t); }
-            if (outside(y, b, i, tmp)) {
-                fails++;
-                if (!quiet && fails <= 5)
-                    FAIL("%s: leaf %s vertex %ld axis %d = %.17g outside [%.17g, %.17g]\n",
-                         file, L->path, k, i, mpq_get_d(y), b->lo[i], b->hi[i]);
-            }
-            if (*nh == 0 || mpq_cmp(y, hlo[i]) < 0) mpq_set(hlo[i], y);
-            if (*nh == 0 || mpq_cmp(y, hhi[i]) > 0) mpq_set(hhi[i], y);
-        }
-        (*nh)++;
-    next:;
-    }
-    if (corners) {
-        for (int c = 0; c < 8; c++) {
-            for (int j = 0; j < 3; j++) mpq_set_d(v[j], (c >> j) & 1 ? A->max[j] : A->min[j]);
-            for (int i = 0; i < 3; i++) {
-                mpq_set(y, W->m[i][3]);
-                for (int j = 0; j < 3; j++) { mpq_mul(t, W->m[i][j], v[j]); mpq_add(y, y, t); }
-                st->corners++;
-                if (outside(y, b, i, tmp)) {
-                    fails++;
-                    if (!quiet) FAIL("%s: leaf %s min/max corner %d axis %d outside the box\n", file, L->path, c, i);
-                }
-            }
-        }
-    }
-done:
-    for (int j = 0; j < 3; j++) mpq_clear(v[j]);
-    mpq_clears(y, t, tmp, NULL);
-    return fails;
-}
 
 /* exact image of box b (finite) under W on axis i: lo, hi */
-static void box_image(const cbx_box *b, const qmap *W, int i, mpq_t lo, mpq_t hi)
+static void box_image(const cbx_box *b, const gx_map *W, int i, mpq_t lo, mpq_t hi)
 {
     mpq_t a, c, t;
     mpq_inits(a, c, t, NULL);
@@ -288,9 +110,9 @@ static double qabs_max(const mpq_t a, const mpq_t b)
 /* All checks of one loaded document (fromv: --from-vertices boxes). */
 static void check_doc(const gl_doc *d, int fromv, stats *st, const char *file)
 {
-    qmap *W = malloc((size_t)(d->nn + 1) * sizeof *W);
+    gx_map *W = malloc((size_t)(d->nn + 1) * sizeof *W);
     if (!W) { fprintf(stderr, "out of memory\n"); exit(2); }
-    for (int k = 0; k < d->nn; k++) qm_init(&W[k]);
+    for (int k = 0; k < d->nn; k++) gx_init(&W[k]);
     mpq_t hlo[3], hhi[3], ilo, ihi;
     for (int j = 0; j < 3; j++) { mpq_init(hlo[j]); mpq_init(hhi[j]); }
     mpq_inits(ilo, ihi, NULL);
@@ -298,10 +120,10 @@ static void check_doc(const gl_doc *d, int fromv, stats *st, const char *file)
     for (int l = 0; l < d->nl; l++) {
         const gl_leaf *L = &d->leaves[l];
         const gl_acc *A = &d->accs[L->acc];
-        const qmap *M = world(d, W, L->node);
+        const gx_map *M = gx_world(d, W, L->node);
         int nh;
         st->instances++;
-        check_leaf(d, L, &L->world, M, !fromv, !fromv, st, file, 0, hlo, hhi, &nh);
+        gx_check_leaf(d, L, &L->world, M, !fromv, !fromv, &st->c, file, report, hlo, hhi, &nh);
         /* the scene box holds the leaf box */
         const gl_scene *G = &d->scenes[L->scene];
         for (int i = 0; i < 3; i++)
@@ -331,10 +153,10 @@ static void check_doc(const gl_doc *d, int fromv, stats *st, const char *file)
         if (!teeth_done && nh > 0 && isfinite(L->world.lo[0]) && !A->outside && isfinite(h0) && fabs(h0) < DBL_MAX) {
             cbx_box b = L->world;
             b.lo[0] = nextafter(mpq_get_d(hlo[0]), HUGE_VAL);   /* > exact min */
-            stats scratch;
+            gx_counts scratch;
             memset(&scratch, 0, sizeof scratch);
             int nh2;
-            if (check_leaf(d, L, &b, M, 0, !fromv, &scratch, file, 1, hlo, hhi, &nh2) == 0)
+            if (gx_check_leaf(d, L, &b, M, 0, !fromv, &scratch, file, NULL, hlo, hhi, &nh2) == 0)
                 FAIL("%s: teeth: a box one ulp inside the exact hull was not caught (leaf %s)\n", file, L->path);
             st->teeth++;
             teeth_done = 1;
@@ -342,7 +164,7 @@ static void check_doc(const gl_doc *d, int fromv, stats *st, const char *file)
     }
     for (int j = 0; j < 3; j++) { mpq_clear(hlo[j]); mpq_clear(hhi[j]); }
     mpq_clears(ilo, ihi, NULL);
-    for (int k = 0; k < d->nn; k++) qm_clear(&W[k]);
+    for (int k = 0; k < d->nn; k++) gx_clear(&W[k]);
     free(W);
 }
 
@@ -496,6 +318,12 @@ static void run_file(const char *path, const char *label, const char *kind, cons
     size_t nn = fread(notes, 1, sizeof notes - 1, nf);
     notes[nn] = '\0';
     fclose(nf);
+    /* one line each: the file's strings are quoted with their control
+     * characters escaped (no newline inside an error or a note, no ESC) */
+    for (const char *s = err; rc != 0 && *s; s++)
+        if ((unsigned char)*s < 0x20 || *s == 0x7f) { FAIL("%s: control character 0x%02x in the error\n", label, (unsigned char)*s); break; }
+    for (const char *s = notes; *s; s++)
+        if (((unsigned char)*s < 0x20 && *s != '\n') || *s == 0x7f) { FAIL("%s: control character 0x%02x in a note\n", label, (unsigned char)*s); break; }
     if (strcmp(kind, "error") == 0) {
         if (rc == 0) { FAIL("%s: loaded, expected the error '%s'\n", label, sub); gltf_free(&d); return; }
         if (!strstr(err, sub)) FAIL("%s: error '%s' does not contain '%s'\n", label, err, sub);
@@ -605,7 +433,7 @@ int main(int argc, char **argv)
            st.files, assimp_files, nhand, st.loaded, st.flagged, st.refused);
     printf("test_gltf: %ld mesh instances (min/max boxes and --from-vertices boxes), %ld vertex instances inside their box (exact, GMP), "
            "%ld min/max corners inside, %ld infinite-coordinate ends, %ld teeth caught\n",
-           st.instances, st.vertices, st.corners, st.inf_checks, st.teeth);
+           st.instances, st.c.vertices, st.c.corners, st.c.inf_checks, st.teeth);
     printf("test_gltf: max relative excess (per axis, relative to the axis' largest magnitude) of a box over the exact image of\n"
            "  the box it maps (rounding only): %.3g with min/max boxes, %.3g with --from-vertices\n"
            "  the exact hull of the mapped vertices (rounding + boxing in local coordinates + loose min/max): %.3g with min/max, %.3g with --from-vertices\n",
@@ -616,7 +444,7 @@ int main(int argc, char **argv)
            "%ld finite cases hold the exact extremes of every row (GMP), %ld with infinite ends have no NaN and "
            "the infinite ends they must have\n", nimat, st.imat_fin, st.imat_inf);
     /* the tool itself */
-    long before = n_fail;
+    long before = n_fail, nfiles = st.files;
     char p1[1200], p2[1200], p3[1200];
     snprintf(p1, sizeof p1, "%s/2CylinderEngine-glTF-Binary/2CylinderEngine.glb", adir);
     snprintf(p2, sizeof p2, "%s/trs.gltf", ddir);
@@ -630,6 +458,10 @@ int main(int argc, char **argv)
     printf("test_gltf: the tool on %ld files: printed boxes equal gltf_load's bit for bit, exit statuses as expected%s\n",
            st.files, n_fail > before ? " (NOT: see above)" : "");
     printf("test_gltf: %.1f s, %ld failure%s\n", (double)(clock() - t0) / CLOCKS_PER_SEC, n_fail, n_fail == 1 ? "" : "s");
+    /* the suites' last line (scripts/cross.sh, scripts/evidence.py): the
+     * items are the files, mesh instances, random imat_box cases and tool runs */
+    long items = nfiles + st.instances + st.imat_fin + st.imat_inf + st.files;
+    printf("%ld passed, %ld failed\n", items > n_fail ? items - n_fail : 0, n_fail);
     for (int k = 0; k < nf; k++) free(files[k]);
     free(files);
     free(ex);

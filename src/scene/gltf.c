@@ -13,6 +13,10 @@
  * every matrix of the interval matrix, so under the exact product.
  */
 #define _XOPEN_SOURCE 700          /* realpath */
+/* 64-bit file offsets and inode numbers on 32-bit hosts too: without
+ * it, readdir / stat fail with EOVERFLOW on file systems with large inode
+ * numbers (armhf under qemu-user, scripts/cross.sh) */
+#define _FILE_OFFSET_BITS 64
 #include "gltf.h"
 
 #include <errno.h>
@@ -276,29 +280,50 @@ typedef struct ctx {
     size_t nbv, nbuffers, ntex;
 } ctx;
 
+/* Messages quote the file's own strings (a uri, an extension's name, a
+ * key, jansson's "near '...'"): their control bytes (a JSON "\n" or
+ * "\u001b" decodes to one) are written as \xNN, so that an error stays one
+ * line and cannot drive the terminal.  dst gets at most n - 1 bytes. */
+static void esc_ctl(char *dst, size_t n, const char *src)
+{
+    size_t m = 0;
+    for (const unsigned char *s = (const unsigned char *)src; *s && m + 1 < n; s++) {
+        if (*s >= 0x20 && *s != 0x7f) {
+            dst[m++] = (char)*s;
+        } else {
+            if (m + 5 > n) break;
+            snprintf(dst + m, 5, "\\x%02x", *s);
+            m += 4;
+        }
+    }
+    dst[m] = '\0';
+}
+
 /* "FILE: msg" (msg names the JSON pointer or the byte) */
 static int fail(ctx *c, const char *fmt, ...)
 {
-    char msg[400];
+    char msg[400], e[400];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(c->err, c->errlen, "%s: %s", c->path, msg);
+    esc_ctl(e, sizeof e, msg);
+    snprintf(c->err, c->errlen, "%s: %s", c->path, e);
     return -1;
 }
 
 static void note(ctx *c, const char *fmt, ...)
 {
+    char msg[400], e[400];
     c->d->notes++;
     if (!c->notes)
         return;
     va_list ap;
     va_start(ap, fmt);
-    fprintf(c->notes, "%s: note: ", c->path);
-    vfprintf(c->notes, fmt, ap);
-    fputc('\n', c->notes);
+    vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    esc_ctl(e, sizeof e, msg);
+    fprintf(c->notes, "%s: note: %s\n", c->path, e);
 }
 
 static int read_all(const char *path, unsigned char **out, size_t *n)
@@ -665,13 +690,38 @@ static double comp(const unsigned char *p, int ct, int j, double *den, int norm)
     }
 }
 
+long gltf_sparse_index(const gl_doc *d, int a, long s)
+{
+    const gl_acc *A = &d->accs[a];
+    double den;
+    return (long)comp(A->sp_idx + (size_t)s * (size_t)csize(A->sp_ict), A->sp_ict, 0, &den, 0);
+}
+
+long gltf_first_zero(const gl_doc *d, int a)
+{
+    const gl_acc *A = &d->accs[a];
+    if (A->base || A->sp_n >= A->count)
+        return -1;
+    /* the indices strictly increase: the first gap */
+    long lo = 0, hi = A->sp_n;                     /* index s == s below lo */
+    while (lo < hi) {
+        long m = lo + (hi - lo) / 2;
+        if (gltf_sparse_index(d, a, m) == m) lo = m + 1; else hi = m;
+    }
+    return lo;
+}
+
 void gltf_vertex(const gl_doc *d, int a, long k, double num[3], double *den)
 {
     const gl_acc *A = &d->accs[a];
     const unsigned char *p = NULL;
-    if (A->spmap && A->spmap[k] >= 0)
-        p = A->sp_val + (size_t)A->spmap[k] * 3u * (size_t)csize(A->ctype);
-    else if (A->base)
+    long lo = 0, hi = A->sp_n;                     /* binary search of k */
+    while (lo < hi) {
+        long m = lo + (hi - lo) / 2, x = gltf_sparse_index(d, a, m);
+        if (x == k) { p = A->sp_val + (size_t)m * 3u * (size_t)csize(A->ctype); break; }
+        if (x < k) lo = m + 1; else hi = m;
+    }
+    if (!p && A->base)
         p = A->base + (size_t)k * A->stride;
     *den = 1.0;
     for (int j = 0; j < 3; j++)
@@ -732,7 +782,7 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     A->base = base;
     A->stride = stride;
     if (role == 1) {
-        for (long k = 0; k < A->count; k++) {
+        for (long k = 0; base && k < A->count; k++) {      /* no bufferView: zeros */
             double den, v = base ? comp(base + (size_t)k * stride, (int)ct, 0, &den, 0) : 0.0;
             if (v >= (double)nvert)
                 return fail(c, "%s: index %.0f (element %ld) is out of range: the POSITION accessor has %lld vertices",
@@ -771,16 +821,21 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
             return fail(c, "%s: %lld indices run past the end of bufferView %lld", qi, sc, ib);
         if ((unsigned long long)vo + (unsigned long long)sc * es > vlen)
             return fail(c, "%s: %lld values run past the end of bufferView %lld", qv, sc, vb);
-        A->spmap = malloc((size_t)cnt * sizeof *A->spmap);
-        if (!A->spmap)
-            return fail(c, "out of memory");
-        for (long k = 0; k < cnt; k++) A->spmap[k] = -1;
+        /* no table of count entries (count may be 2^31 - 1 with a few
+         * bytes of data): the indices are searched (they must strictly
+         * increase, as the spec says) */
+        double prev = -1.0;
         for (long k = 0; k < sc; k++) {
             double den, ix = comp(ibase + io + (size_t)k * (size_t)csize((int)ic), (int)ic, 0, &den, 0);
             if (ix >= (double)cnt)
                 return fail(c, "%s: index %.0f out of range (count %lld)", qi, ix, cnt);
-            A->spmap[(long)ix] = k;
+            if (ix <= prev)
+                return fail(c, "%s: index %.0f (element %ld) does not strictly increase", qi, ix, k);
+            prev = ix;
         }
+        A->sp_n = (long)sc;
+        A->sp_ict = (int)ic;
+        A->sp_idx = ibase + io;
         A->sp_val = vbase + vo;
     }
     /* min / max as written */
@@ -799,9 +854,15 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     A->first_out = -1;
     if (A->no_data)
         return 0;
-    for (long k = 0; k < A->count; k++) {
+    /* with a bufferView, every vertex (count is bounded by the data);
+     * without, the sparse entries and one zero vertex standing for the
+     * count - sp_n others (gltf_first_zero) */
+    long nvis = A->base ? A->count : A->sp_n + (A->sp_n < A->count), kz = gltf_first_zero(d, (int)ai);
+    for (long e = 0; e < nvis; e++) {
         double num[3], den;
         int out = 0;
+        long k = A->base ? e : e < A->sp_n ? gltf_sparse_index(d, (int)ai, e) : kz;
+        long mult = A->base || e < A->sp_n ? 1 : A->count - A->sp_n;
         gltf_vertex(d, (int)ai, k, num, &den);
         for (int j = 0; j < 3; j++) {
             iv v = den == 1.0 ? pt(num[j]) : div_enc(num[j], den);
@@ -812,7 +873,8 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
             if (A->has_minmax && (v.lo < A->min[j] || v.hi > A->max[j])) out = 1;
         }
         if (out && A->has_minmax) {
-            if (A->outside++ == 0) A->first_out = k;
+            if (A->outside == 0 || k < A->first_out) A->first_out = k;
+            A->outside += mult;
         }
     }
     return 0;
@@ -1101,7 +1163,9 @@ static int parse_json(ctx *c, const unsigned char *txt, size_t n, const char *wh
     json_error_t je;
     c->root = json_loadb((const char *)txt, n, JSON_REJECT_DUPLICATES, &je);
     if (!c->root) {
-        snprintf(c->err, c->errlen, "%s:%d:%d: %s%s", c->path, je.line, je.column, where, je.text);
+        char e[sizeof je.text];
+        esc_ctl(e, sizeof e, je.text);
+        snprintf(c->err, c->errlen, "%s:%d:%d: %s%s", c->path, je.line, je.column, where, e);
         return -1;
     }
     if (!json_is_object(c->root))
@@ -1155,7 +1219,6 @@ void gltf_free(gl_doc *d)
     for (int k = 0; k < d->nbuf; k++) free(d->bufs[k]);
     free(d->bufs);
     free(d->nbufs);
-    for (int k = 0; k < d->na; k++) free(d->accs[k].spmap);
     free(d->accs);
     free(d->nodes);
     free(d->leaves);
@@ -1242,7 +1305,8 @@ static int load(ctx *c)
     }
     d->ns = (int)ns;
     int *stack = malloc((nn + 1) * sizeof *stack);
-    if (!stack) { free(checked); return fail(c, "out of memory"); }
+    size_t *listed = calloc(nn + 1, sizeof *listed);   /* scene s + 1 that lists the root */
+    if (!stack || !listed) { free(stack); free(listed); free(checked); return fail(c, "out of memory"); }
     int rc = 0;
     for (size_t s = 0; s < ns && rc == 0; s++) {
         json_t *S = json_array_get(scenes, s), *roots;
@@ -1262,6 +1326,14 @@ static int load(ctx *c)
                 break;
             }
             int root = (int)json_integer_value(v);
+            /* the spec's uniqueItems: a root listed twice would bound
+             * its subtree twice (n roots listing one mesh of n primitives:
+             * n^2 instances from a file of size n) */
+            if (listed[root] == s + 1) {
+                rc = fail(c, "%s/nodes/%zu: node %d is listed twice", p, r, root);
+                break;
+            }
+            listed[root] = s + 1;
             if (d->nodes[root].parent >= 0) {
                 rc = fail(c, "%s/nodes/%zu: node %d is not a root (it is a child of node %d)", p, r, root, d->nodes[root].parent);
                 break;
@@ -1299,6 +1371,7 @@ static int load(ctx *c)
             note(c, "%s: the scene has no mesh instance", p);
     }
     free(stack);
+    free(listed);
     free(checked);
     return rc;
 }

@@ -39,8 +39,11 @@ typedef struct gl_acc {
     /* vertex data: element k at base + k * stride (NULL: all zero) */
     const unsigned char *base;
     size_t stride;
-    long *spmap;                /* sparse: value index per vertex, or -1 */
-    const unsigned char *sp_val;
+    /* sparse: sp_n indices (componentType sp_ict at sp_idx, strictly
+     * increasing: checked), values at sp_val (element size as above) */
+    long sp_n;
+    int sp_ict;
+    const unsigned char *sp_idx, *sp_val;
     cbx_box vbox;               /* hull of the vertices (outward) */
     int vnan, vinf;             /* some vertex is NaN / infinite */
     long outside, first_out;    /* vertices outside min/max; the first */
@@ -85,6 +88,16 @@ void gltf_free(gl_doc *d);
  * for float32; 127, 255, 32767 or 65535 for normalized integers, where
  * num is already clamped to -den as the spec says). */
 void gltf_vertex(const gl_doc *d, int a, long k, double num[3], double *den);
+
+/* The vertex index of sparse entry s (0 <= s < sp_n) of accessor a.  An
+ * accessor without a bufferView holds zeros but at its sparse indices:
+ * its count may be 2^31 - 1 with a few bytes of data, so its vertices are
+ * visited as its sparse entries plus one zero vertex (the first index that
+ * is not sparse, gltf_first_zero), never one by one. */
+long gltf_sparse_index(const gl_doc *d, int a, long s);
+/* That first zero vertex of accessor a (no bufferView), or -1 if every
+ * vertex is sparse (or the accessor has a bufferView). */
+long gltf_first_zero(const gl_doc *d, int a);
 
 /* The box transform: out contains { M x : M in W, x in b } (exact reals).
  * Returns CBX_OK, or CBX_ERANGE when some end is infinite. */

@@ -54,6 +54,26 @@ write("sparse.gltf", doc([{"mesh": 0, "translation": [1, 2, 3]}],
                            "values": {"bufferView": 1}}}],
     views=[{"buffer": 0, "byteLength": 4}, {"buffer": 0, "byteOffset": 4, "byteLength": 24}],
     buffers=[{"byteLength": 28, "uri": b64(sp)}]))
+# huge sparse accessors without a bufferView: count 2^31 - 1
+# with 28 bytes of data; read in time and memory of the sparse entries
+# (no table of count entries, no loop over the zeros)
+big = {"componentType": 5126, "count": 2147483647, "type": "VEC3",
+       "sparse": {"count": 2, "indices": {"bufferView": 0, "componentType": 5125},
+                  "values": {"bufferView": 1}}}
+spb = struct.pack("<II", 0, 2147483646) + f32(5, -6, 7, -8, 9, 0.125)
+spv = [{"buffer": 0, "byteLength": 8}, {"buffer": 0, "byteOffset": 8, "byteLength": 24}]
+write("sparse_huge.gltf", doc([{"mesh": 0}], accessors=[dict(big, min=[-8, -6, 0], max=[5, 9, 7])],
+    views=spv, buffers=[{"byteLength": 32, "uri": b64(spb)}]))
+# the same claiming min/max that leave out the 2^31 - 3 zero vertices
+write("sparse_huge_claims.gltf", doc([{"mesh": 0}], accessors=[dict(big, min=[-8, -6, 0.125], max=[5, 9, 7])],
+    views=spv, buffers=[{"byteLength": 32, "uri": b64(spb)}]))
+# sparse indices that do not strictly increase (the spec requires it)
+write("sparse_order.gltf", doc([{"mesh": 0}],
+    accessors=[{"componentType": 5126, "count": 8, "type": "VEC3", "min": [-8, -6, 0], "max": [5, 9, 7],
+                "sparse": {"count": 2, "indices": {"bufferView": 0, "componentType": 5123},
+                           "values": {"bufferView": 1}}}],
+    views=[{"buffer": 0, "byteLength": 4}, {"buffer": 0, "byteOffset": 4, "byteLength": 24}],
+    buffers=[{"byteLength": 28, "uri": b64(struct.pack("<HH", 6, 1) + f32(5, -6, 7, -8, 9, 0.125))}]))
 # KHR_mesh_quantization: normalized shorts (-32768 clamps to -1), stride 8
 q = b"".join(struct.pack("<hhhh", *v, 0) for v in [(-32768, 0, 32767), (100, -200, 300), (1, 2, 3)])
 write("quantized.gltf", doc([{"mesh": 0, "scale": [3, 3, 3], "rotation": [0, 0, 1, 1]}],
@@ -61,6 +81,15 @@ write("quantized.gltf", doc([{"mesh": 0, "scale": [3, 3, 3], "rotation": [0, 0, 
                 "min": [-1, -0.0062, 0.00009], "max": [0.0031, 0.00007, 1]}],
     views=[{"buffer": 0, "byteLength": 24, "byteStride": 8}],
     buffers=[{"byteLength": 24, "uri": b64(q)}],
+    extensionsUsed=["KHR_mesh_quantization"], extensionsRequired=["KHR_mesh_quantization"]))
+# a normalized vertex 33/255 whose min is the double nearest 33/255, which
+# is above it: the vertex lies outside min/max (flagged), though 33.0 / 255
+# rounded lands on min (the oracle compares the exact fraction)
+write("claims_norm.gltf", doc([{"mesh": 0}],
+    accessors=[{"bufferView": 0, "componentType": 5121, "normalized": True, "count": 2, "type": "VEC3",
+                "min": [33 / 255] * 3, "max": [1, 1, 1]}],
+    views=[{"buffer": 0, "byteLength": 8, "byteStride": 4}],
+    buffers=[{"byteLength": 8, "uri": b64(bytes([33, 33, 33, 0, 255, 255, 255, 0]))}],
     extensionsUsed=["KHR_mesh_quantization"], extensionsRequired=["KHR_mesh_quantization"]))
 write("overflow.gltf", doc([{"children": [1], "scale": [1e300, 1, 1]}, {"mesh": 0, "scale": [1e10, 1, 1]}]))
 write("two_scenes.gltf", doc([{"mesh": 0}, {"mesh": 0, "translation": [5, 0, 0]}],
@@ -83,6 +112,9 @@ open("cube.glb", "wb").write(glb(gdoc, cube))
 write("cycle.gltf", doc([{"mesh": 0}, {"children": [2]}, {"children": [1]}]))
 write("two_parents.gltf", doc([{"children": [2]}, {"children": [2]}, {"mesh": 0}], scenes=[{"nodes": [0, 1]}]))
 write("self_child.gltf", doc([{"children": [0], "mesh": 0}]))
+# a scene root listed twice (the spec's uniqueItems; n roots
+# listing a mesh of n primitives made n^2 mesh instances)
+write("root_twice.gltf", doc([{"mesh": 0}, {"mesh": 0}], scenes=[{"nodes": [1, 0, 1]}]))
 write("not_root.gltf", doc([{"children": [1]}, {"mesh": 0}], scenes=[{"nodes": [1]}]))
 acc = lambda **k: [dict({"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
                          "min": [-1, -2, -0.25], "max": [1, 0.5, 3]}, **k)]
@@ -119,6 +151,9 @@ write("matrix_proj.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0.5, 0, 1, 0, 0, 
 write("matrix_trs.gltf", doc([{"mesh": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1], "scale": [1, 1, 1]}]))
 write("quat_zero.gltf", doc([{"mesh": 0, "rotation": [0, 0, 0, 0]}]))
 write("ext_required.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_meshopt_compression"]))
+# the file's strings in a message: control characters escaped,
+# the error stays one line and sends no escape sequence to the terminal
+write("ctl_chars.gltf", doc([{"mesh": 0}], extensionsRequired=["EXT_a\nb\u001b[2J"]))
 write("no_scene.gltf", doc([{"mesh": 0}], scenes=[]))
 write("version1.gltf", dict(doc([{"mesh": 0}]), asset={"version": "1.0"}))
 # claims: vertices outside min/max (flagged), NaN / infinite positions (flagged)
