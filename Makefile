@@ -14,7 +14,9 @@
 #                 headers it includes, certbox.pc, and the CMake package
 #                 (LIBDIR/cmake/certbox: find_package(certbox), targets
 #                 certbox::certbox and certbox::certbox_static)
-#   make proof    re-run the Frama-C/WP proofs; report in build/proof/report.md
+#   make proof    re-prove what changed (WP cache kept in build/proof-cache);
+#                 make proof-check proves everything from scratch (as make check);
+#                 report in build/proof/report.md
 #   make proof-report  copy that report to the committed proofs/report.md
 #   make evidence the evidence pack for an assessor, in build/evidence/
 #   make mutants  mutation check: deliberate faults must all be caught
@@ -215,8 +217,11 @@ header-check:
 # proof-report refreshes the committed proofs/report.md from the last run,
 # only if that run proved the checkout's current sources (proofs/inputs.sh).
 .PHONY: proof-report
+# make proof (development): WP's cache kept in $(B)/proof-cache, so only
+# what changed is re-proved; make proof-check (make check, CI): every goal
+# from scratch.
 proof: check-deps-proof
-	sh proofs/run.sh
+	CBX_WP_KEEP_CACHE=$(CURDIR)/$(B)/proof-cache sh proofs/run.sh
 
 proof-check: check-deps-proof
 	sh proofs/run.sh --check
@@ -224,6 +229,7 @@ proof-check: check-deps-proof
 proof-report:
 	@test -f $(B)/proof/report.md || { echo "proof-report: no $(B)/proof/report.md: run make proof first"; exit 1; }
 	@sh proofs/inputs.sh --check || { echo "proof-report: $(B)/proof is not a run on these sources (proofs/inputs.sh): run make proof first"; exit 1; }
+	@! grep -q 'from a kept WP cache' $(B)/proof/report.md || { echo "proof-report: that run read goals from the kept cache: run make proof-check (from scratch) first"; exit 1; }
 	cp $(B)/proof/report.md proofs/report.md
 	@tail -n 2 proofs/report.md
 
@@ -234,7 +240,7 @@ proof-report:
 # Both reuse the logs of the last proof run only if it proved these very
 # sources (proofs/inputs.sh); otherwise they run the proofs first (a fresh
 # clone: about 20 minutes on 2 cores).
-PROOF_CURRENT = @sh proofs/inputs.sh --check || { echo "evidence: no proof run of these sources in $(B)/proof: running the proofs first"; $(MAKE) proof; }
+PROOF_CURRENT = @{ sh proofs/inputs.sh --check && ! grep -q 'from a kept WP cache' $(B)/proof/report.md; } || { echo "evidence: no from-scratch proof run of these sources in $(B)/proof: running the proofs first"; $(MAKE) proof-check; }
 evidence: all
 	@sh scripts/deps.sh evidence
 	$(PROOF_CURRENT)

@@ -88,8 +88,14 @@ case $name in
     # 1's followed by pass 2's; proofs/report.py takes each goal's last
     # result.  Racing both provers on every goal cost twice the CPU, and a
     # second pass over every goal regenerated every task.
-    cache=$out/cache-$name
-    rm -rf "$cache"; mkdir -p "$cache"
+    # CBX_WP_KEEP_CACHE (make proof, during development): a cache kept
+    # between runs, so only changed goals go to the provers; unset (make
+    # proof-check, CI): a cache of this job alone, empty at the start
+    if [ -n "${CBX_WP_KEEP_CACHE:-}" ]; then
+      cache=$CBX_WP_KEEP_CACHE/$name; mkdir -p "$cache"
+    else
+      cache=$out/cache-$name; rm -rf "$cache"; mkdir -p "$cache"
+    fi
     # shellcheck disable=SC2086
     $FC $TU $OPTS $SEL -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-10} -wp-cache update \
       -wp-cache-dir "$cache" > $out/wp-$name.log 2>&1 || true
@@ -101,7 +107,7 @@ case $name in
       $FC $TU $OPTS $SEL -wp-prover cvc4r$fam,z3r$fam -wp-timeout ${CBX_WP_TIMEOUT:-120} \
         -wp-cache update -wp-cache-dir "$cache" >> $out/wp-$name.log 2>&1 || true
     fi
-    rm -rf "$cache" ;;
+    [ -n "${CBX_WP_KEEP_CACHE:-}" ] || rm -rf "$cache" ;;
 esac
 end=$(date +%s)
 echo $((end - start)) > $out/wp-$name.time

@@ -18,6 +18,8 @@ set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
 check=0; [ "${1:-}" = --check ] && check=1
+# --check always proves from scratch (see job.sh: CBX_WP_KEEP_CACHE)
+[ $check = 1 ] && unset CBX_WP_KEEP_CACHE
 out=build/proof
 mkdir -p $out
 rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256 $out/report.md
@@ -35,7 +37,7 @@ start=$(date +%s)
 # a failed job shows in the report (RESULT: NOT PROVED), not here
 echo $LIST | tr ' ' '\n' | xargs -P "$JOBS" -n 1 sh proofs/job.sh || true
 end=$(date +%s)
-python3 proofs/report.py $out $((end - start)) > $out/report.md.new
+CBX_CACHED=${CBX_WP_KEEP_CACHE:+1} python3 proofs/report.py $out $((end - start)) > $out/report.md.new
 echo "$inputs" > $out/inputs.sha256
 mv $out/report.md.new $out/report.md
 tail -n 4 $out/report.md

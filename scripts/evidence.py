@@ -192,6 +192,9 @@ def proof(raw):
     rep = os.path.join(d, 'report.md')
     if os.path.exists(rep):
         shutil.copy(rep, os.path.join(raw, 'proof', 'report.md'))
+        if 'from a kept WP cache' in open(rep).read():
+            failures.append('proof: build/proof is a make proof run from a kept WP cache; '
+                            'the evidence needs a from-scratch run (make proof-check)')
     else:
         failures.append('proof: no build/proof/report.md beside the logs (run make proof)')
     if not data['ok']:
