@@ -10,6 +10,7 @@
 # reason.
 # Usage: sh scripts/proof_teeth.sh  (from the checkout's root)
 set -u
+. scripts/teeth_copy.sh
 root=$(pwd)
 B=$root/build/proof-teeth
 rm -rf "$B"
@@ -25,16 +26,7 @@ pass=0; fail=0
 case_() {
   name=$1; file=$2; fct=$3; tu=$4; props=$5; goal=$6; old=$7; new=$8
   d=$B/$name
-  mkdir -p "$d"
-  cp -r src specs proofs "$d"/
-  python3 - "$d/$file" "$old" "$new" <<'PY'
-import sys
-p, old, new = sys.argv[1:4]
-t = open(p).read()
-if t.count(old) != 1:
-    sys.exit('proof_teeth: the text to replace is not found exactly once in ' + p)
-open(p, 'w').write(t.replace(old, new))
-PY
+  teeth_copy "$d" "$file" "$old" "$new"
   fam=64; case $tu in *_f.c) fam=32;; esac
   (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
      -wp -wp-rte -wp-split -wp-prover "cvc4r$fam" -wp-timeout 10 -wp-par 1 \

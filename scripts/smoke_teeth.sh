@@ -6,6 +6,7 @@
 # CBX_SMOKE_STEPS), and requires a smoke test that does not pass.
 # Usage: sh scripts/smoke_teeth.sh  (from the checkout's root)
 set -u
+. scripts/teeth_copy.sh
 root=$(pwd)
 B=$root/build/smoke-teeth
 rm -rf "$B"
@@ -21,16 +22,7 @@ pass=0; fail=0
 case_() {
   name=$1; file=$2; fct=$3; tu=$4; old=$5; new=$6
   d=$B/$name
-  mkdir -p "$d"
-  cp -r src specs proofs "$d"/
-  python3 - "$d/$file" "$old" "$new" <<'PY'
-import sys
-p, old, new = sys.argv[1:4]
-t = open(p).read()
-if t.count(old) != 1:
-    sys.exit('smoke_teeth: the text to replace is not found exactly once in ' + p)
-open(p, 'w').write(t.replace(old, new))
-PY
+  teeth_copy "$d" "$file" "$old" "$new"
   (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
      -wp -wp-rte -wp-smoke-tests ${CBX_SMOKE_OPTS:-} -wp-prover "cvc4r$(case $tu in *_f.c) echo 32;; *) echo 64;; esac)" -wp-steps "$STEPS" -wp-smoke-timeout 30 \
      -wp-par 2 -wp-cache none $NOGOALS -wp-fct "$fct" > "$d/smoke.log" 2>&1) || true

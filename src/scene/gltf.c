@@ -46,6 +46,26 @@ int gltf_sniff(const char *path)
     return 0;
 }
 
+/* The tool's box output (both formats; also without jansson). */
+static void num(char *buf, size_t n, double x, int hex)
+{
+    snprintf(buf, n, hex ? "%a" : "%.17g", x);
+}
+
+void tool_print_box(const cbx_box *b, int hex, int json)
+{
+    char t[6][40];
+    for (int j = 0; j < 3; j++) {
+        num(t[j], sizeof t[j], b->lo[j], hex);
+        num(t[3 + j], sizeof t[3 + j], b->hi[j], hex);
+    }
+    if (json)
+        printf("\"lo\": [\"%s\", \"%s\", \"%s\"], \"hi\": [\"%s\", \"%s\", \"%s\"]",
+               t[0], t[1], t[2], t[3], t[4], t[5]);
+    else
+        printf("lo %s %s %s hi %s %s %s", t[0], t[1], t[2], t[3], t[4], t[5]);
+}
+
 #ifndef CBX_GLTF
 /* Built without jansson (the Makefile found none): glTF files are named as
  * such and refused, other files go on to the tool's own format. */
@@ -1405,26 +1425,6 @@ int gltf_load(gl_doc *d, const char *path, int from_vertices, FILE *notes, char 
     return 0;
 }
 
-/* ---- the tool ---------------------------------------------------------- */
-static void num(char *buf, size_t n, double x, int hex)
-{
-    snprintf(buf, n, hex ? "%a" : "%.17g", x);
-}
-
-static void print_box(const cbx_box *b, int hex, int json)
-{
-    char t[6][40];
-    for (int j = 0; j < 3; j++) {
-        num(t[j], sizeof t[j], b->lo[j], hex);
-        num(t[3 + j], sizeof t[3 + j], b->hi[j], hex);
-    }
-    if (json)
-        printf("\"lo\": [\"%s\", \"%s\", \"%s\"], \"hi\": [\"%s\", \"%s\", \"%s\"]",
-               t[0], t[1], t[2], t[3], t[4], t[5]);
-    else
-        printf("lo %s %s %s hi %s %s %s", t[0], t[1], t[2], t[3], t[4], t[5]);
-}
-
 /* The `name` of element k of top-level array `arr` as a JSON string
  * (escaped by jansson; malloc'd), or NULL if it has none. */
 static char *name_json(const gl_doc *d, const char *arr, int k)
@@ -1467,21 +1467,21 @@ int gltf_main(int argc, char **argv)
                        L->path, L->node, nn ? nn : "null", L->mesh, mn ? mn : "null", L->prim, L->acc);
                 free(nn);
                 free(mn);
-                print_box(&L->world, hex, 1);
+                tool_print_box(&L->world, hex, 1);
                 printf(", \"status\": \"%s\"}%s\n", cbx_status_name(L->st), k + 1 < G->first + G->n ? "," : "");
             } else {
                 printf("leaf %s mesh:%d:%d ", L->path, L->mesh, L->prim);
-                print_box(&L->world, hex, 0);
+                tool_print_box(&L->world, hex, 0);
                 printf(" %s\n", cbx_status_name(L->st));
             }
         }
         if (json) {
             printf("  ], \"scene\": %d, ", s);
-            print_box(&G->world, hex, 1);
+            tool_print_box(&G->world, hex, 1);
             printf(", \"status\": \"%s\"}%s\n", cbx_status_name(G->st), s + 1 < d.ns ? "," : "");
         } else {
             printf("scene ");
-            print_box(&G->world, hex, 0);
+            tool_print_box(&G->world, hex, 0);
             printf(" %s\n", cbx_status_name(G->st));
         }
         worse(&all, G->st);

@@ -108,4 +108,8 @@ cbx_status gltf_imat_box(const gl_imat *W, const cbx_box *b, cbx_box *out);
  * then the caller goes on with its own formats. */
 int gltf_main(int argc, char **argv);
 
+/* The tool's box output, for both formats: "lo X Y Z hi X Y Z" (%.17g, or
+ * %a with hex), or the same as JSON fields with json. */
+void tool_print_box(const cbx_box *b, int hex, int json);
+
 #endif /* CBX_GLTF_H */

@@ -12,24 +12,6 @@
 #include "scene.h"
 #include "gltf.h"
 
-static void num(char *buf, size_t n, double x, int hex)
-{
-    snprintf(buf, n, hex ? "%a" : "%.17g", x);
-}
-
-static void print_box(const cbx_box *b, int hex, int json)
-{
-    char t[6][40];
-    for (int j = 0; j < 3; j++) {
-        num(t[j], sizeof t[j], b->lo[j], hex);
-        num(t[3 + j], sizeof t[3 + j], b->hi[j], hex);
-    }
-    if (json)
-        printf("\"lo\": [\"%s\", \"%s\", \"%s\"], \"hi\": [\"%s\", \"%s\", \"%s\"]",
-               t[0], t[1], t[2], t[3], t[4], t[5]);
-    else
-        printf("lo %s %s %s hi %s %s %s", t[0], t[1], t[2], t[3], t[4], t[5]);
-}
 
 int main(int argc, char **argv)
 {
@@ -60,21 +42,21 @@ int main(int argc, char **argv)
         const sc_leaf *L = &s.leaves[k];
         if (json) {
             printf("  {\"name\": \"%s\", \"kind\": \"%s\", ", L->name, scene_kind_name(L->kind));
-            print_box(&L->world, hex, 1);
+            tool_print_box(&L->world, hex, 1);
             printf(", \"status\": \"%s\"}%s\n", cbx_status_name(L->st), k + 1 < s.nl ? "," : "");
         } else {
             printf("leaf %s %s ", L->name, scene_kind_name(L->kind));
-            print_box(&L->world, hex, 0);
+            tool_print_box(&L->world, hex, 0);
             printf(" %s\n", cbx_status_name(L->st));
         }
     }
     if (json) {
         printf("], \"scene\": {");
-        print_box(&s.world, hex, 1);
+        tool_print_box(&s.world, hex, 1);
         printf(", \"status\": \"%s\"}}\n", cbx_status_name(s.st));
     } else {
         printf("scene ");
-        print_box(&s.world, hex, 0);
+        tool_print_box(&s.world, hex, 0);
         printf(" %s\n", cbx_status_name(s.st));
     }
     int rc = s.st == CBX_OK ? 0 : 1;

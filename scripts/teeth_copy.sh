@@ -1,0 +1,15 @@
+# Sourced by scripts/smoke_teeth.sh and scripts/proof_teeth.sh.
+# teeth_copy DIR FILE OLD NEW: a scratch copy of src/, specs/ and proofs/ in
+# DIR, with OLD replaced by NEW in DIR/FILE (OLD must occur exactly once).
+teeth_copy() {
+  mkdir -p "$1"
+  cp -r src specs proofs "$1"/
+  python3 - "$1/$2" "$3" "$4" <<'PY'
+import sys
+p, old, new = sys.argv[1:4]
+t = open(p).read()
+if t.count(old) != 1:
+    sys.exit('teeth: the text to replace is not found exactly once in ' + p)
+open(p, 'w').write(t.replace(old, new))
+PY
+}
