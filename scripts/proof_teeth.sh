@@ -11,12 +11,7 @@
 # Usage: sh scripts/proof_teeth.sh  (from the checkout's root)
 set -u
 . scripts/teeth_copy.sh
-root=$(pwd)
-B=$root/build/proof-teeth
-rm -rf "$B"
-mkdir -p "$B"
-conf=$(sh proofs/setup.sh "$B/why3")
-export WHY3CONFIG="$conf"
+teeth_setup proof-teeth
 pass=0; fail=0
 # case NAME FILE FUNCTION TU PROPS GOAL OLD NEW: replace OLD by NEW in FILE,
 # prove FUNCTION in TU (only the properties PROPS, a comma list of names,

@@ -7,12 +7,7 @@
 # Usage: sh scripts/smoke_teeth.sh  (from the checkout's root)
 set -u
 . scripts/teeth_copy.sh
-root=$(pwd)
-B=$root/build/smoke-teeth
-rm -rf "$B"
-mkdir -p "$B"
-conf=$(sh proofs/setup.sh "$B/why3")
-export WHY3CONFIG="$conf"
+teeth_setup smoke-teeth
 STEPS=${CBX_SMOKE_STEPS:-80000}
 # the smoke options of proofs/job.sh (dead-call tests off: see there)
 export CBX_SMOKE_OPTS="${CBX_SMOKE_OPTS:--wp-no-smoke-dead-call}"

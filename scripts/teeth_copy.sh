@@ -1,4 +1,12 @@
 # Sourced by scripts/smoke_teeth.sh and scripts/proof_teeth.sh.
+# teeth_setup NAME: B=build/NAME (emptied), WHY3CONFIG for the provers.
+teeth_setup() {
+  B=$(pwd)/build/$1
+  rm -rf "$B"
+  mkdir -p "$B"
+  WHY3CONFIG=$(sh proofs/setup.sh "$B/why3")
+  export WHY3CONFIG
+}
 # teeth_copy DIR FILE OLD NEW: a scratch copy of src/, specs/ and proofs/ in
 # DIR, with OLD replaced by NEW in DIR/FILE (OLD must occur exactly once).
 teeth_copy() {

@@ -169,9 +169,9 @@ static iv iv_add(iv a, iv b)
 
 static iv iv_neg(iv a) { iv r; r.lo = -a.hi; r.hi = -a.lo; return r; }
 
-static iv iv_mul(iv a, iv b)
+/* the hull of four enclosures (the end products of two intervals) */
+static iv hull4(const iv p[4])
 {
-    iv p[4] = { mul_enc(a.lo, b.lo), mul_enc(a.lo, b.hi), mul_enc(a.hi, b.lo), mul_enc(a.hi, b.hi) };
     iv r = p[0];
     for (int k = 1; k < 4; k++) {
         if (p[k].lo < r.lo) r.lo = p[k].lo;
@@ -180,16 +180,17 @@ static iv iv_mul(iv a, iv b)
     return clampiv(r);
 }
 
+static iv iv_mul(iv a, iv b)
+{
+    iv p[4] = { mul_enc(a.lo, b.lo), mul_enc(a.lo, b.hi), mul_enc(a.hi, b.lo), mul_enc(a.hi, b.hi) };
+    return hull4(p);
+}
+
 /* a / n for an interval n with 0 < n.lo <= n.hi < inf */
 static iv iv_div(iv a, iv n)
 {
     iv p[4] = { div_enc(a.lo, n.lo), div_enc(a.lo, n.hi), div_enc(a.hi, n.lo), div_enc(a.hi, n.hi) };
-    iv r = p[0];
-    for (int k = 1; k < 4; k++) {
-        if (p[k].lo < r.lo) r.lo = p[k].lo;
-        if (p[k].hi > r.hi) r.hi = p[k].hi;
-    }
-    return clampiv(r);
+    return hull4(p);
 }
 
 static iv iv_sq(double x)
