@@ -47,10 +47,10 @@ SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
-LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c \
+LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c src/cbx_imat.c \
            src/cbx_interval_f.c src/cbx_center_f.c src/cbx_convert_f.c src/cbx_sphere_f.c src/cbx_batch_f.c \
            src/cbx_ieee.c src/cbx_ieee_f.c
-HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_ieee_cases.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_ieee_cases.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
@@ -141,7 +141,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat
 test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -150,6 +150,7 @@ test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_sphere 200000 1
 	./$(B)/test_alias 100000 1
 	./$(B)/test_halfspace 150 1
+	./$(B)/test_imat 200000 50000 1
 	./$(B)/test_chain 1000 20 1
 	./$(B)/test_batch 200 1
 	./$(B)/test_tight 150 1
@@ -172,6 +173,7 @@ test-san: $(TESTS:%=$(B)/san/test_%) $(B)/certbox
 	./$(B)/san/test_special
 	./$(B)/san/test_alias 20000 2
 	./$(B)/san/test_halfspace 30 2
+	./$(B)/san/test_imat 40000 10000 2
 	./$(B)/san/test_chain 1000 10 2
 	./$(B)/san/test_batch 200 2
 	./$(B)/san/test_tight 50 2

@@ -47,6 +47,15 @@ case_ c2b-lo-widened src/cbx_endpoints.h cbx_c2b proofs/all_f.c s2,e2,p2,f2,ta,t
 case_ kernel-lo-widened-twice src/cbx_kernel.h cbx_end_lo proofs/all.c tight tight \
   "    return cbx_sub_rn(s, w);" \
   "    return cbx_sub_rn(cbx_sub_rn(s, w), w);" &
+# 4. the interval-matrix kernel: the lower end widened twice
+case_ imat-lo-widened-twice src/cbx_ikernel.h cbx_irow proofs/all.c tight tight \
+  "    r.lo = cbx_sub_rn(slo, w);" \
+  "    r.lo = cbx_sub_rn(cbx_sub_rn(slo, w), w);" &
+# 5. the interval-matrix kernel: the upper end not widened (unsound: the
+#    containment postcondition must fail, not only the tightness one)
+case_ imat-hi-not-widened src/cbx_ikernel.h cbx_irow proofs/all.c sound sound \
+  "    r.hi = cbx_add_rn(shi, w);" \
+  "    r.hi = cbx_add_rn(shi, CBX_C(0.0));" &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

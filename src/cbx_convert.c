@@ -70,27 +70,8 @@ static void cwhole_set(cbx_cbox *out, int i)
 }
 
 /* The input checks, each one predicate of the contract (one call in the
- * public functions keeps their goals small). */
-/*@ requires \valid_read(in);
-    assigns \nothing;
-    ensures \result != 0 <==> box_nan(in);
-*/
-static int box_any_nan(const cbx_box *in)
-{
-    return cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
-           || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2]);
-}
-
-/*@ requires \valid_read(in);
-    assigns \nothing;
-    ensures \result != 0 <==> is_empty(in);
-*/
-static int box_any_empty(const cbx_box *in)
-{
-    return cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
-           || cbx_no_point(in->lo[2], in->hi[2]);
-}
-
+ * public functions keeps their goals small; box_any_nan, box_any_empty:
+ * src/cbx_domain.h). */
 /*@ requires \valid_read(in);
     assigns \nothing;
     ensures \result != 0 <==> cbox_nan(in);

@@ -94,4 +94,50 @@ static inline int cbx_no_point(cbx_fp lo, cbx_fp hi)
     return hi < lo || lo > CBX_K(FMAX) || hi < -CBX_K(FMAX);
 }
 
+/* The input checks of a box, each one predicate of the contracts (one call
+ * in the public functions keeps their goals small). */
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> box_nan(in);
+*/
+static inline int box_any_nan(const cbx_box *in)
+{
+    return cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
+           || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> is_empty(in);
+*/
+static inline int box_any_empty(const cbx_box *in)
+{
+    return cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
+           || cbx_no_point(in->lo[2], in->hi[2]);
+}
+
+/* The special outputs: the whole space (CBX_EINVAL, whole axes) and the
+ * empty box (CBX_EMPTY). */
+/*@ requires \valid(out);
+    assigns *out;
+    ensures whole_space(out);
+*/
+static inline void set_whole(cbx_box *out)
+{
+    out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
+    out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
+    out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
+}
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures empty_out(out);
+*/
+static inline void set_empty(cbx_box *out)
+{
+    out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
+    out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
+    out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
+}
+
 #endif /* CBX_DOMAIN_H */

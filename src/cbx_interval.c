@@ -18,28 +18,6 @@
 #include "cbx_kernel.h"
 #include "cbx_fast.h"
 
-/*@ requires \valid(out);
-    assigns *out;
-    ensures whole_space(out);
-*/
-static void set_whole(cbx_box *out)
-{
-    out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
-    out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
-    out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
-}
-
-/*@ requires \valid(out);
-    assigns *out;
-    ensures empty_out(out);
-*/
-static void set_empty(cbx_box *out)
-{
-    out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
-    out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
-    out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
-}
-
 /* ---- half-spaces and out-of-domain boxes: one end at a time -----------
  * Where the row is not full (some box end infinite, or a pair outside the
  * domain) but the map row is finite, each end of the axis is computed on

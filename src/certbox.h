@@ -61,6 +61,12 @@ typedef struct cbx_affinef { float m[3][4]; } cbx_affinef;
 typedef struct cbx_boxf { float lo[3], hi[3]; } cbx_boxf;
 typedef struct cbx_cboxf { float c[3], h[3]; } cbx_cboxf;
 
+/* An interval matrix (binary64): the set of affine maps whose entry (i, j)
+ * lies in [lo[i][j], hi[i][j]], the translation in column 3; what a chain
+ * of rounded transforms or a rotation built from a quaternion is known to
+ * be (cbx_transform_box_imat, cbx_imat_compose). */
+typedef struct cbx_imat { double lo[3][4], hi[3][4]; } cbx_imat;
+
 /* A map prepared once for many boxes (cbx_prepare, cbx_preparef): a copy
  * of the map, and whether it lies in the fast range (every linear entry at
  * most 2^509 in magnitude, every translation at most 2^1018; binary32:
@@ -97,6 +103,7 @@ typedef enum cbx_class {
  * CBX_FRAMAC_ONLY_32 (proofs/run.sh): the other family's lemmas then stay
  * out of its provers' context. */
 #ifdef __FRAMAC__
+#include "cbx_imat_logic.h" /* first: its lemmas need a context of their own */
 #include "cbx_logic.h"
 #include "cbx_ball.h"
 #endif
@@ -105,6 +112,7 @@ typedef enum cbx_class {
 #include "cbx_prec_begin.h"
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
+#include "cbx_imat.h"
 #endif
 #include "cbx_api.h"
 #include "cbx_prec_end.h"
@@ -251,6 +259,74 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_bo
 cbx_status cbx_motion_box(const cbx_affine *a0, const cbx_affine *a1, const cbx_box *in, cbx_box *out);
 
 
+/* ---- interval matrices: maps known up to an interval per entry ---------
+ * cbx_transform_box_imat: out contains the image of the box under every
+ * map of the interval matrix *a: for each axis i, every real map M with
+ * a->lo[i][j] <= M_ij <= a->hi[i][j] and every real point x of the box,
+ *     out->lo[i] <= M_i0 x_0 + M_i1 x_1 + M_i2 x_2 + M_i3 <= out->hi[i],
+ * and each end is within 12 u S_i + 2^-1065 of the exact end of that set
+ * (S_i = max(|M_i3| ends) + sum_j the largest corner product |M_ij x_j|;
+ * specs/cbx_imat.h: irow_lo, irow_hi, irow_mag).  Proven.  Status and
+ * output:
+ *   NaN in *a or *in, or an entry of *a with hi < lo -> CBX_EINVAL, whole space
+ *   an axis of *in with no real point              -> CBX_EMPTY, lo +inf, hi -inf
+ *   otherwise CBX_OK, or CBX_ERANGE where an axis has an infinite end, a
+ *   linear entry or box end above 2^509 or a translation above 2^1018 in
+ *   magnitude: that axis is [-inf, +inf].
+ * out may be in itself; otherwise *out may not overlap *a or *in. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior bad_input:
+      assumes imat_bad(a) || box_nan(in);
+      ensures \result == CBX_EINVAL;
+      ensures whole_space(out);
+    behavior empty_input:
+      assumes !imat_bad(a) && !box_nan(in) && is_empty(in);
+      ensures \result == CBX_EMPTY;
+      ensures empty_out(out);
+    behavior box_input:
+      assumes !imat_bad(a) && !box_nan(in) && !is_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: icoord(out->lo[0], out->hi[0], CBX_IROWV(a, 0, Pre), CBX_BV(in, Pre));
+      ensures axis1: icoord(out->lo[1], out->hi[1], CBX_IROWV(a, 1, Pre), CBX_BV(in, Pre));
+      ensures axis2: icoord(out->lo[2], out->hi[2], CBX_IROWV(a, 2, Pre), CBX_BV(in, Pre));
+      ensures ok_iff: \result == CBX_OK <==>
+        (irow_fast(CBX_IROWV(a, 0, Pre), CBX_BV(in, Pre)) && irow_fast(CBX_IROWV(a, 1, Pre), CBX_BV(in, Pre))
+         && irow_fast(CBX_IROWV(a, 2, Pre), CBX_BV(in, Pre)));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box *out);
+
+/* cbx_imat_compose: *out encloses every map A B (B applied first) with A
+ * in *a and B in *b: entry (i, j) contains (A B)_ij = sum_k A_ik B_kj
+ * (+ A_i3 when j = 3), each end within 12 u S + 2^-1065 of the exact end
+ * of that set, as above.  Proven.  Status: CBX_EINVAL (every entry
+ * [-inf, +inf]) if *a or *b has a NaN or an entry with hi < lo; else
+ * CBX_OK, or CBX_ERANGE where an entry's inputs leave the range above:
+ * that entry is [-inf, +inf] (a sound, unbounded entry: a box mapped by it
+ * gets the whole line on that axis).  *out may not overlap *a or *b. */
+/*@ requires valid: \valid_read(a) && \valid_read(b) && \valid(out);
+    requires sep: \separated(out, a) && \separated(out, b);
+    assigns *out;
+    behavior bad_input:
+      assumes imat_bad(a) || imat_bad(b);
+      ensures \result == CBX_EINVAL;
+      ensures imat_whole(out);
+    behavior maps:
+      assumes !imat_bad(a) && !imat_bad(b);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures col0: \let o = *out; \at(icol_s(o, a, b, 0), Pre);
+      ensures col1: \let o = *out; \at(icol_s(o, a, b, 1), Pre);
+      ensures col2: \let o = *out; \at(icol_s(o, a, b, 2), Pre);
+      ensures col3: \let o = *out; \at(icol_s(o, a, b, 3), Pre);
+      ensures ok_iff: \result == CBX_OK <==>
+        \at(icol_fast(a, b, 0) && icol_fast(a, b, 1) && icol_fast(a, b, 2) && icol_fast(a, b, 3), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out);
 
 #endif /* binary64 only */
 

@@ -64,7 +64,8 @@ def clauses(contract):
     pieces = []
     for raw in text.split(';'):
         # a quantifier's binder (\forall integer k;) ends in ';' too
-        if pieces and re.search(r'\\(forall|exists)\s+[\w\s,]*$', pieces[-1]):
+        if pieces and (re.search(r'\\(forall|exists)\s+[\w\s,]*$', pieces[-1])
+                       or re.search(r'\\let\s+\w+\s*=[^;]*$', pieces[-1])):
             pieces[-1] += ';' + raw
         else:
             pieces.append(raw)

@@ -2,15 +2,21 @@
  * glTF 2.0 input (see gltf.h and docs/gltf.md).
  *
  * Soundness: no number is ever rounded without being paid for.  Every
- * node's local map is an interval matrix: a `matrix` node's entries are
- * degenerate intervals; a TRS node's T * R(q)/|q|^2 * S is computed in
- * outward interval arithmetic (each rounded operation enclosed: RN, then
- * one ulp outward unless FMA / TwoSum show the operation exact).  A
- * node's world map is its parent's world map times its local map, again
- * in outward interval arithmetic, once per node.  The box of a primitive
- * (its accessor's min/max, or its vertices with --from-vertices) is then
- * mapped by gltf_imat_box, which contains the image of the box under
- * every matrix of the interval matrix, so under the exact product.
+ * node's local map is an interval matrix (cbx_imat): a `matrix` node's
+ * entries are degenerate intervals; a TRS node's T * R(q)/|q|^2 * S is
+ * computed here in outward interval arithmetic (each rounded operation
+ * enclosed: RN, then one ulp outward unless FMA / TwoSum show the
+ * operation exact).  A node's world map is its parent's world map times
+ * its local map, once per node, by the library's cbx_imat_compose; the box
+ * of a primitive (its accessor's min/max, or its vertices with
+ * --from-vertices) is then mapped by the library's cbx_transform_box_imat.
+ * Both are proven (Frama-C/WP, certbox.h): the composition encloses every
+ * product of maps of the two interval matrices, the box contains the image
+ * of the box under every map of the world interval matrix, so under the
+ * exact product of the node chain.  An entry or an axis whose inputs leave
+ * their fast range (an infinite end, a linear entry or box end above
+ * 2^509, a translation above 2^1018 in magnitude) is the whole line
+ * [-inf, +inf], CBX_ERANGE.
  */
 #define _XOPEN_SOURCE 700          /* realpath */
 /* 64-bit file offsets and inode numbers on 32-bit hosts too: without
@@ -200,50 +206,7 @@ static iv iv_sq(double x)
     return r;
 }
 
-static iv getm(const gl_imat *m, int i, int j) { iv r; r.lo = m->lo[i][j]; r.hi = m->hi[i][j]; return r; }
 static void setm(gl_imat *m, int i, int j, iv v) { m->lo[i][j] = v.lo; m->hi[i][j] = v.hi; }
-
-/* r = a o b (b applied first), outward: r contains every A B with A in a,
- * B in b.  r may not alias a or b. */
-static void imat_compose(gl_imat *r, const gl_imat *a, const gl_imat *b)
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++) {
-            iv s = j == 3 ? getm(a, i, 3) : pt(0.0);
-            for (int k = 0; k < 3; k++)
-                s = iv_add(s, iv_mul(getm(a, i, k), getm(b, k, j)));
-            setm(r, i, j, s);
-        }
-}
-
-/*
- * Contract (exact reals): for every real matrix M with
- * W->lo[i][j] <= M_ij <= W->hi[i][j] and every real x with
- * b->lo[j] <= x_j <= b->hi[j] (b non-empty), out->lo[i] <= (M x)_i + M_i3
- * <= out->hi[i].  An infinite end of W or b stands for "unbounded"; out
- * never holds NaN.  CBX_ERANGE when some end of out is infinite.
- * out_i = W_i3 + sum_j [W_ij] * [b_j], every product the hull of the four
- * end products and every sum rounded outward.
- */
-cbx_status gltf_imat_box(const gl_imat *W, const cbx_box *b, cbx_box *out)
-{
-    cbx_status st = CBX_OK;
-    cbx_box o;
-    for (int i = 0; i < 3; i++) {
-        iv s = getm(W, i, 3);
-        for (int j = 0; j < 3; j++) {
-            iv x;
-            x.lo = b->lo[j];
-            x.hi = b->hi[j];
-            s = iv_add(s, iv_mul(getm(W, i, j), clampiv(x)));
-        }
-        o.lo[i] = s.lo;
-        o.hi[i] = s.hi;
-        if (isinf(s.lo) || isinf(s.hi)) st = CBX_ERANGE;
-    }
-    *out = o;
-    return st;
-}
 
 /* The interval enclosure of T * R(q)/|q|^2 * S.  q is scaled by a power
  * of two first (exactly: the rotation does not change) so that its
@@ -988,7 +951,11 @@ static int load_nodes(ctx *c, json_t *nodes, size_t nn, size_t nmesh)
 }
 
 /* World map of node k: its parent's world map (computed first: the
- * scenes are walked top-down) times its local map; once per node. */
+ * scenes are walked top-down) times its local map; once per node.  The
+ * composition's status is not kept: an entry it could not bound is
+ * [-inf, +inf], and every box mapped through it gets that axis whole with
+ * CBX_ERANGE from cbx_transform_box_imat (no NaN reaches it: the local
+ * maps are finite or infinite intervals, never NaN). */
 static const gl_imat *world_of(gl_doc *d, int k)
 {
     gl_node *g = &d->nodes[k];
@@ -996,7 +963,7 @@ static const gl_imat *world_of(gl_doc *d, int k)
         if (g->parent < 0)
             g->world = g->local;
         else
-            imat_compose(&g->world, world_of(d, g->parent), &g->local);
+            (void)cbx_imat_compose(world_of(d, g->parent), &g->local, &g->world);
         g->world_done = 1;
     }
     return &g->world;
@@ -1059,7 +1026,7 @@ static int add_leaf(ctx *c, int scene, int node, int prim, long long acc)
     if (L->st == CBX_EINVAL) {
         for (int j = 0; j < 3; j++) { L->world.lo[j] = -HUGE_VAL; L->world.hi[j] = HUGE_VAL; }
     } else {
-        worse(&L->st, gltf_imat_box(world_of(d, node), &L->local, &L->world));
+        worse(&L->st, cbx_transform_box_imat(world_of(d, node), &L->local, &L->world));
     }
     return 0;
 }

@@ -14,8 +14,10 @@
 #include "certbox.h"
 
 /* An interval 3x4 affine map: y_i = sum_j M_ij x_j + M_i3 for some real
- * M_ij in [lo[i][j], hi[i][j]] (ends may be infinite, never NaN). */
-typedef struct gl_imat { double lo[3][4], hi[3][4]; } gl_imat;
+ * M_ij in [lo[i][j], hi[i][j]] (ends may be infinite, never NaN): the
+ * library's cbx_imat, composed by cbx_imat_compose and applied to boxes by
+ * cbx_transform_box_imat (certbox.h, proven). */
+typedef cbx_imat gl_imat;
 
 /* A node as written: its local map (a degenerate interval for `matrix`,
  * outward-rounded T*R*S for TRS), the numbers it came from, its parent. */
@@ -98,10 +100,6 @@ long gltf_sparse_index(const gl_doc *d, int a, long s);
 /* That first zero vertex of accessor a (no bufferView), or -1 if every
  * vertex is sparse (or the accessor has a bufferView). */
 long gltf_first_zero(const gl_doc *d, int a);
-
-/* The box transform: out contains { M x : M in W, x in b } (exact reals).
- * Returns CBX_OK, or CBX_ERANGE when some end is infinite. */
-cbx_status gltf_imat_box(const gl_imat *W, const cbx_box *b, cbx_box *out);
 
 /* The tool: certbox [--json] [--hex] [--from-vertices] FILE.gltf|FILE.glb.
  * Returns the exit status, or -1 if FILE is not glTF (or no FILE given):

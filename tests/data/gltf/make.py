@@ -38,6 +38,11 @@ write("trs.gltf", doc([
     {"children": [1], "translation": [10, -3.5, 0.1], "rotation": [1, 2, 3, 4], "scale": [0.3, 7, -1.1]},
     {"children": [2], "rotation": [0.1, -0.2, 0.3, 0.9], "translation": [1e-3, 2, 3]},
     {"mesh": 0, "scale": [1e-8, 3, 1], "rotation": [1e-200, 0, 3e-200, 1e-200]}]))
+# a rotation whose squares sum to 1 + 2^-60 and whose diagonal entry
+# w^2 + z^2 - x^2 - y^2 = 2^-60 - 1: both sums round to a power of two, so
+# only the outward step of an inexact sum keeps the exact entry (checked
+# entry by entry by test_gltf: the mutant G02 of scripts/mutants.txt)
+write("rot_tiny.gltf", doc([{"mesh": 0, "rotation": [0, 1, 2 ** -30, 0]}]))
 write("matrix.gltf", doc([
     {"children": [1], "matrix": [0.1, 0.2, 0.3, 0, -1, 1e-5, 7, 0, 2, 2, 2, 0, 1e5, -1e5, 0.3, 1]},
     {"mesh": 0, "matrix": [1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1]}]))
