@@ -103,7 +103,9 @@ typedef enum cbx_class {
  * CBX_FRAMAC_ONLY_32 (proofs/run.sh): the other family's lemmas then stay
  * out of its provers' context. */
 #ifdef __FRAMAC__
+#if !defined(CBX_FRAMAC_ONLY_32)    /* binary64 only (interval matrices) */
 #include "cbx_imat_logic.h" /* first: its lemmas need a context of their own */
+#endif
 #include "cbx_logic.h"
 #include "cbx_ball.h"
 #endif

@@ -47,13 +47,16 @@
  *       (pbrt, Embree); tests/bench_ref.h ref_naive8.  Against row 2.
  *   2   classic Arvo interval form, RN (cglm, Godot): ref_arvo_box, each
  *       box under its own map.  Unsound (no widening).  The baseline of
- *       rows 1, 3, 3p, 3t, 4-7.
+ *       rows 1, 3, 3p, 3t, 3i, 4-7.
  *   3   cbx_transform_box, each box under its own map.
  *   3p  cbx_transform_box_prep, each box under its own prepared map
  *       (cbx_prepare, untimed): output bit-identical to row 3's.
  *   3t  tight: cbx_transform_box_tight (every finite end the tightest
  *       double, RD / RU of the exact end); its notes give, exactly (GMP,
  *       MPFR), how many ends are not the tightest double (must be 0).
+ *   3i  cbx_transform_box_imat, each box under its own map as a point
+ *       interval matrix (lo = hi = the map, built untimed): what the
+ *       interval-matrix kernel (four corner products per term) costs.
  *   2a  ref_arvo_box with one map (the first case's) for every box: the
  *       baseline of 3a-3bp.
  *   3a  cbx_transform_box, that one map for every box.
@@ -226,6 +229,7 @@ typedef struct bench_ctx {
     cbx_affine *a;            /* the N cases: maps and boxes              */
     cbx_box *in;
     cbx_prepared *pa, p0;     /* cbx_prepare(a[k]), cbx_prepare(a[0])     */
+    cbx_imat *ia;             /* a[k] as a point interval matrix (lo = hi) */
     cbx_cbox *cin_cbx, *cin_rn; /* the boxes as cboxes: outward, RN       */
     cbx_affinef *af;          /* the N cases rounded to binary32          */
     cbx_boxf *inf;
@@ -412,6 +416,7 @@ REF_KERNEL(k_arvo, cbx_box, ref_arvo_box(&b->a[i], &b->in[i], &o[i]))
 CBX_KERNEL(k_cbx, cbx_box, cbx_transform_box(&b->a[i], &b->in[i], &o[i]))
 CBX_KERNEL(k_prep, cbx_box, cbx_transform_box_prep(&b->pa[i], &b->in[i], &o[i]))
 CBX_KERNEL(k_tight, cbx_box, cbx_transform_box_tight(&b->a[i], &b->in[i], &o[i]))
+CBX_KERNEL(k_imat, cbx_box, cbx_transform_box_imat(&b->ia[i], &b->in[i], &o[i]))
 REF_KERNEL(k_arvo1, cbx_box, ref_arvo_box(&b->a[0], &b->in[i], &o[i]))
 CBX_KERNEL(k_cbx1, cbx_box, cbx_transform_box(&b->a[0], &b->in[i], &o[i]))
 CBX_KERNEL(k_prep1, cbx_box, cbx_transform_box_prep(&b->p0, &b->in[i], &o[i]))
@@ -1076,6 +1081,8 @@ static void define_rows(bench_ctx *b, const sizes *z)
                 n, P, 0, bsz, MK_BOX);
     w->want_opt = 1;
     w->proven = "yes (EFTs trusted)";
+    add_row(G_BOX, 0, "3i", "certbox `cbx_transform_box_imat`, own map per box as a point interval matrix",
+            k_imat, n, P, 0, bsz, MK_BOX);
     /* one map for every box, against row 2a */
     unsound(add_row(G_ONE, 1, "2a", "Arvo interval, RN, one map for every box", k_arvo1, n, P, 0, bsz,
                     MK_BOX1));
@@ -1474,6 +1481,7 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     b->a = xmalloc(n * sizeof *b->a);
     b->in = xmalloc(n * sizeof *b->in);
     b->pa = xmalloc(n * sizeof *b->pa);
+    b->ia = xmalloc(n * sizeof *b->ia);
     b->cin_cbx = xmalloc(n * sizeof *b->cin_cbx);
     b->cin_rn = xmalloc(n * sizeof *b->cin_rn);
     b->af = xmalloc(n * sizeof *b->af);
@@ -1485,6 +1493,8 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
         if (cbx_box_to_cbox(&b->in[k], &b->cin_cbx[k]) != CBX_OK) b->bad++;
         ref_box_to_cbox(&b->in[k], &b->cin_rn[k]);
         cbx_prepare(&b->a[k], &b->pa[k]);
+        memcpy(b->ia[k].lo, b->a[k].m, sizeof b->a[k].m);
+        memcpy(b->ia[k].hi, b->a[k].m, sizeof b->a[k].m);
         affine_to_f(&b->a[k], &b->af[k]);
         box_to_f(&b->in[k], &b->inf[k]);
         cbx_preparef(&b->af[k], &b->paf[k]);
