@@ -12,4 +12,3 @@
 #include "cbx_tight.c"
 #include "cbx_class.c"
 #include "cbx_motion.c"
-#include "cbx_imat.c"

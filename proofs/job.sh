@@ -12,6 +12,8 @@
 #   B64, B32  everything else (domain checks, public functions), without
 #             -wp-split (splitting the behaviors' postconditions multiplies
 #             goals); B64 is cut in two (B64a, B64b) to balance the jobs
+#   I64, SI64 the interval-matrix functions (proofs/imat.c, with the
+#             lemmas of specs/cbx_imat_logic.h) and their smoke tests
 #   S64, S32  the smoke tests alone (-wp-smoke-tests, every regular goal
 #             deselected): a smoke goal "passes" when CVC4 can NOT derive
 #             false from its context within CBX_SMOKE_STEPS resource units
@@ -45,7 +47,7 @@ NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@inva
 # Functions proved with -wp-split, per family (-wp-fct rejects a name
 # that the translation unit does not define).
 KERNELS32=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,cbx_neg,cbx_column,cbx_sum3,cbx_end_lo,cbx_end_hi,cbx_axis,cbx_in2,cbx_ord3,cbx_fast_row,cbx_full_axis,cbx_fast_axis,cbx_fast_box,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point,cbx_transform_box_prepf,cbx_transform_boxf,cbx_preparef
-KERNELS64=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,cbx_neg,cbx_column,cbx_sum3,cbx_end_lo,cbx_end_hi,cbx_axis,cbx_in2,cbx_ord3,cbx_fast_row,cbx_full_axis,cbx_fast_axis,cbx_fast_box,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point,cbx_transform_box_prep,cbx_transform_box,cbx_prepare,eft_sum,pass8,decide,certify,approx,neighbour,eft_ok,tighten_core,exact_terms,tighten_lo,tighten_hi,tight_lo_sound,tight_hi_sound,tight_axis,cbx_add_dn,cbx_add_up,in_rng,end_pair,span_add,span_id,col0_sound,col1_sound,col2_sound,lerp_pt,mot_corners,mot_points_lo,mot_points_hi,cbx_icolumn,cbx_isum3,cbx_irow
+KERNELS64=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,cbx_neg,cbx_column,cbx_sum3,cbx_end_lo,cbx_end_hi,cbx_axis,cbx_in2,cbx_ord3,cbx_fast_row,cbx_full_axis,cbx_fast_axis,cbx_fast_box,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point,cbx_transform_box_prep,cbx_transform_box,cbx_prepare,eft_sum,pass8,decide,certify,approx,neighbour,eft_ok,tighten_core,exact_terms,tighten_lo,tighten_hi,tight_lo_sound,tight_hi_sound,tight_axis,cbx_add_dn,cbx_add_up,in_rng,end_pair,span_add,span_id,col0_sound,col1_sound,col2_sound,lerp_pt,mot_corners,mot_points_lo,mot_points_hi
 # The kernels that need -wp-split (without it, a goal of each timed out at
 # 10 s on 2026-11-24); the other kernels are proved whole (jobs K64, K32).
 SPLIT64=cbx_transform_box,cbx_transform_box_prep,vertex_lo,vertex_hi,cbx_fast_row,cbox_axis,ball_radius,row_radius,eft_ok
@@ -55,8 +57,13 @@ minus() { echo "$1" | tr , '\n' | grep -v -x -F "$(echo "$2" | tr , '\n')" | pas
 # The binary64 public functions and their helpers that are not kernels,
 # in two halves of similar proof time (B64a: tight mode, classes, motion).
 B64A=cbx_transform_box_tight,cbx_classify,cbx_transform_box_as,kern_identity,kern_translate,fast_identity,fast_translate,ends_ok,tr_ok,is_val,translate_holds,axis_full,full_row,cbx_motion_box,mot_union,mot_axis_union,one_box,one_box_as,step,put_box,severity,batch,cbx_transform_boxes,cbx_transform_boxes_prep,class_checked
+# The interval-matrix functions (proofs/imat.c): the unit also holds the
+# kernels it includes, proved in their own jobs.
+IMAT64=cbx_icolumn,cbx_isum3,cbx_irow,iv_in,icoord_of,imat_row_bad,imat_any_bad,cbx_transform_box_imat,col_apply,whole_imat,cbx_imat_compose
 # TU: the translation unit; OPTS: its options; SEL: the goals it proves
 case $name in
+  I64) TU=proofs/imat.c; OPTS=$WP; SEL="-wp-fct $IMAT64" ;;
+  SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SEL="-wp-fct $IMAT64" ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
   A64) TU=proofs/all.c; OPTS="$WP -wp-split"; SEL="-wp-fct $SPLIT64" ;;
@@ -80,7 +87,7 @@ case $name in
     # goals in well under a second and nearly all the rest within 10 s (the
     # big behaviors' postconditions take 2-9 s; at 2 s they all fell to pass
     # 2, which regenerated every goal of their functions; at 10 s a few
-    # goals of ball_radius, row_radius, cbox_axis did on a loaded machine).  2: both provers
+    # goals of cbx_sphere_box fell to pass 2 on a loaded machine).  2: both provers
     # raced with the full timeout, on
     # the functions where pass 1 left a goal unproved (every goal of those
     # functions is regenerated; the ones pass 1 proved are read back from

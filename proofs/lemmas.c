@@ -3,6 +3,7 @@
  * (pass L of proofs/run.sh): this file has no function, so WP's goals are
  * the lemmas. */
 #define CBX_FRAMAC_ONLY_64 1
+#define CBX_IMAT_LEMMAS 1
 #include "certbox.h"
 
 #include "cbx_eft.h"

@@ -28,6 +28,7 @@ JOBS = {
     'B64b': 'binary64 public functions and helpers',
     'B32': 'binary32 public functions and helpers',
     'S64': 'binary64 smoke tests', 'S32': 'binary32 smoke tests',
+    'I64': 'binary64 interval matrices (proofs/imat.c)', 'SI64': 'binary64 interval-matrix smoke tests',
 }
 FAMILY = {'64': 'binary64 (double): `cbx_transform_box`, ...',
           '32': 'binary32 (float): `cbx_transform_boxf`, ... (same sources)'}

@@ -48,12 +48,12 @@ case_ kernel-lo-widened-twice src/cbx_kernel.h cbx_end_lo proofs/all.c tight tig
   "    return cbx_sub_rn(s, w);" \
   "    return cbx_sub_rn(cbx_sub_rn(s, w), w);" &
 # 4. the interval-matrix kernel: the lower end widened twice
-case_ imat-lo-widened-twice src/cbx_ikernel.h cbx_irow proofs/all.c tight tight \
+case_ imat-lo-widened-twice src/cbx_ikernel.h cbx_irow proofs/imat.c tight tight \
   "    r.lo = cbx_sub_rn(slo, w);" \
   "    r.lo = cbx_sub_rn(cbx_sub_rn(slo, w), w);" &
 # 5. the interval-matrix kernel: the upper end not widened (unsound: the
 #    containment postcondition must fail, not only the tightness one)
-case_ imat-hi-not-widened src/cbx_ikernel.h cbx_irow proofs/all.c sound sound \
+case_ imat-hi-not-widened src/cbx_ikernel.h cbx_irow proofs/imat.c sound sound \
   "    r.hi = cbx_add_rn(shi, w);" \
   "    r.hi = cbx_add_rn(shi, CBX_C(0.0));" &
 wait

@@ -4,7 +4,8 @@
  * specs/cbx_imat.h).  Read by Frama-C only; certbox.h includes it first,
  * so its lemmas are proven in a context of their own (the provers time out
  * on irow_in_terms with every later lemma of the project beside it, and
- * prove it in 20 ms alone).
+ * prove it in 20 ms alone).  The lemmas are compiled only with
+ * CBX_IMAT_LEMMAS (below).
  *
  * Arithmetic here is exact real arithmetic.  One output coordinate of an
  * interval map is
@@ -26,8 +27,6 @@
       \max(\max(\abs(ml*l), \abs(ml*h)), \max(\abs(mh*l), \abs(mh*h)));
     logic real itsel(integer up, real ml, real mh, real l, real h) =
       up != 0 ? itmax(ml, mh, l, h) : itmin(ml, mh, l, h);
-    lemma itsel_mag: \forall integer up, real ml, mh, l, h;
-      -itmag(ml, mh, l, h) <= itsel(up, ml, mh, l, h) <= itmag(ml, mh, l, h);
 
     // ---------------------------------------------------------------------
     // One output coordinate: its exact ends and its scale
@@ -64,6 +63,17 @@
     predicate iterm_holds(real ml, real mh, real l, real h) =
       \forall real m, x; ml <= m <= mh && l <= x <= h ==>
         itmin(ml, mh, l, h) <= m*x <= itmax(ml, mh, l, h);
+*/
+
+/* The lemmas, only in the translation units that prove or use them
+ * (proofs/lemmas.c, proofs/imat.c: CBX_IMAT_LEMMAS).  Global lemmas are
+ * hypotheses of every goal of their unit, and these (their definitions
+ * unfold into products) slowed ball_radius's assertion sq in
+ * proofs/all.c from 7 s to past 120 s. */
+#ifdef CBX_IMAT_LEMMAS
+/*@
+    lemma itsel_mag: \forall integer up, real ml, mh, l, h;
+      -itmag(ml, mh, l, h) <= itsel(up, ml, mh, l, h) <= itmag(ml, mh, l, h);
     lemma iterm_all: \forall real ml, mh, l, h; iterm_holds(ml, mh, l, h);
     lemma irow_in_terms: \forall real lo, hi, ml0, mh0, ml1, mh1, ml2, mh2, tl, th,
                                       l0, h0, l1, h1, l2, h2;
@@ -71,7 +81,7 @@
       && lo <= irow_lo(ml0, mh0, ml1, mh1, ml2, mh2, tl, l0, h0, l1, h1, l2, h2)
       && irow_hi(ml0, mh0, ml1, mh1, ml2, mh2, th, l0, h0, l1, h1, l2, h2) <= hi
       ==> irow_in(lo, hi, ml0, mh0, ml1, mh1, ml2, mh2, tl, th, l0, h0, l1, h1, l2, h2);
-
 */
+#endif
 
 #endif /* CBX_IMAT_LOGIC_H */
