@@ -604,6 +604,10 @@ def compare(a, b):
 def main():
     if len(sys.argv) == 4 and sys.argv[1] == '--compare':
         return compare(sys.argv[2], sys.argv[3])
+    if len(sys.argv) > 2 or (len(sys.argv) == 2 and sys.argv[1].startswith('-')):
+        sys.stderr.write('usage: evidence.py [OUTDIR] | evidence.py --compare DIR1 DIR2\n'
+                         '  (OUTDIR, default build/evidence, is deleted and written anew)\n')
+        return 2
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'build', 'evidence')
     raw = os.path.join(out, 'raw')
     shutil.rmtree(out, ignore_errors=True)
