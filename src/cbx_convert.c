@@ -167,15 +167,11 @@ static int c2b_set(const cbx_cbox *in, cbx_box *out, int i)
 cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
 {
     if (cbox_any_nan_in(in)) {
-        out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
-        out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
-        out->lo[2] = cbx_ninf(); out->hi[2] = cbx_pinf();
+        set_whole(out);
         return CBX_EINVAL;
     }
     if (cbox_any_neg(in)) {
-        out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
-        out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
-        out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
+        set_empty(out);
         return CBX_EMPTY;
     }
     int k0 = c2b_set(in, out, 0);

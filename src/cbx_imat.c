@@ -87,31 +87,6 @@ static int imat_any_bad(const cbx_imat *a)
     return imat_row_bad(a, 0) || imat_row_bad(a, 1) || imat_row_bad(a, 2);
 }
 
-/* Row i of a applied to the column [l, h], plus the translation [tl, th]. */
-#define CBX_IROW(a, i, tl, th, l0, h0, l1, h1, l2, h2) \
-    icoord_of((a)->lo[i][0], (a)->hi[i][0], (a)->lo[i][1], (a)->hi[i][1], \
-              (a)->lo[i][2], (a)->hi[i][2], tl, th, l0, h0, l1, h1, l2, h2)
-
-cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box *out)
-{
-    if (imat_any_bad(a) || box_any_nan(in)) {
-        set_whole(out);
-        return CBX_EINVAL;
-    }
-    if (box_any_empty(in)) {
-        set_empty(out);
-        return CBX_EMPTY;
-    }
-    cbx_fp l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    cbx_fp h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    cbx_icoord x0 = CBX_IROW(a, 0, a->lo[0][3], a->hi[0][3], l0, h0, l1, h1, l2, h2);
-    cbx_icoord x1 = CBX_IROW(a, 1, a->lo[1][3], a->hi[1][3], l0, h0, l1, h1, l2, h2);
-    cbx_icoord x2 = CBX_IROW(a, 2, a->lo[2][3], a->hi[2][3], l0, h0, l1, h1, l2, h2);
-    out->lo[0] = x0.lo; out->hi[0] = x0.hi;
-    out->lo[1] = x1.lo; out->hi[1] = x1.hi;
-    out->lo[2] = x2.lo; out->hi[2] = x2.hi;
-    return x0.ok + x1.ok + x2.ok == 3 ? CBX_OK : CBX_ERANGE;
-}
 
 /* The three coordinates of a's linear part applied to one column (a box,
  * or column j of the right factor of a composition), plus the
@@ -139,15 +114,37 @@ static cbx_icol col_apply(const cbx_imat *a, cbx_fp tl0, cbx_fp th0, cbx_fp tl1,
                           cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
     cbx_icol r;
-    r.e0 = CBX_IROW(a, 0, tl0, th0, l0, h0, l1, h1, l2, h2);
-    r.e1 = CBX_IROW(a, 1, tl1, th1, l0, h0, l1, h1, l2, h2);
-    r.e2 = CBX_IROW(a, 2, tl2, th2, l0, h0, l1, h1, l2, h2);
+    r.e0 = icoord_of(a->lo[0][0], a->hi[0][0], a->lo[0][1], a->hi[0][1], a->lo[0][2], a->hi[0][2],
+                     tl0, th0, l0, h0, l1, h1, l2, h2);
+    r.e1 = icoord_of(a->lo[1][0], a->hi[1][0], a->lo[1][1], a->hi[1][1], a->lo[1][2], a->hi[1][2],
+                     tl1, th1, l0, h0, l1, h1, l2, h2);
+    r.e2 = icoord_of(a->lo[2][0], a->hi[2][0], a->lo[2][1], a->hi[2][1], a->lo[2][2], a->hi[2][2],
+                     tl2, th2, l0, h0, l1, h1, l2, h2);
     return r;
 }
 
 /* Column j of b, as the box ends of col_apply. */
 #define CBX_BCOL(b, j) \
     (b)->lo[0][j], (b)->hi[0][j], (b)->lo[1][j], (b)->hi[1][j], (b)->lo[2][j], (b)->hi[2][j]
+
+cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box *out)
+{
+    if (imat_any_bad(a) || box_any_nan(in)) {
+        set_whole(out);
+        return CBX_EINVAL;
+    }
+    if (box_any_empty(in)) {
+        set_empty(out);
+        return CBX_EMPTY;
+    }
+    cbx_icol x = col_apply(a, a->lo[0][3], a->hi[0][3], a->lo[1][3], a->hi[1][3],
+                           a->lo[2][3], a->hi[2][3],
+                           in->lo[0], in->hi[0], in->lo[1], in->hi[1], in->lo[2], in->hi[2]);
+    out->lo[0] = x.e0.lo; out->hi[0] = x.e0.hi;
+    out->lo[1] = x.e1.lo; out->hi[1] = x.e1.hi;
+    out->lo[2] = x.e2.lo; out->hi[2] = x.e2.hi;
+    return x.e0.ok + x.e1.ok + x.e2.ok == 3 ? CBX_OK : CBX_ERANGE;
+}
 
 /* Every entry of out [-inf, +inf]. */
 /*@ requires \valid(out);

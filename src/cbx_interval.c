@@ -168,17 +168,6 @@ static int any_nan(const cbx_affine *a, const cbx_box *in)
     return 0;
 }
 
-/* 1 if some axis has no real point (specs: is_empty). */
-/*@ requires \valid_read(in);
-    assigns \nothing;
-    ensures \result != 0 <==> is_empty(in);
-*/
-static int any_inverted(const cbx_box *in)
-{
-    return cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
-           || cbx_no_point(in->lo[2], in->hi[2]);
-}
-
 /* One check per map and per box: the branch-free kernel on the fast range
  * (src/cbx_fast.h); otherwise the careful path: NaN, empty, then axis by
  * axis (the same kernel on a full row, each end from its vertex on a
@@ -191,7 +180,7 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
         set_whole(out);
         return CBX_EINVAL;
     }
-    if (any_inverted(in)) {
+    if (box_any_empty(in)) {
         set_empty(out);
         return CBX_EMPTY;
     }
