@@ -28,7 +28,8 @@ typedef struct cbx_icoord { cbx_fp lo, hi; int ok; } cbx_icoord;
 */
 static int iv_in(cbx_fp l, cbx_fp h, cbx_fp nb, cbx_fp b)
 {
-    return (l >= nb) + (l <= h) + (h <= b) == 3;
+    int n = (l >= nb) + (l <= h) + (h <= b);
+    return n == 3;
 }
 
 /*@ assigns \nothing;
