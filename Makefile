@@ -88,17 +88,17 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 TESTUTIL := tests/exact_util.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
-# The scene tool (issue 6): src/scene/, built with the library's flags.  An
+# The scene tool (issue 6): tools/certbox/, built with the library's flags.  An
 # optional dependency of the tool adds its flags to TOOL_CFLAGS and its
 # libraries to TOOL_LIBS (before -lm); the library itself never links them.
-SCENESRC   := src/scene/scene.c
+SCENESRC   := tools/certbox/scene.c
 TOOL_CFLAGS :=
 TOOL_LIBS   :=
-# glTF input (issue 18: src/scene/gltf.c, docs/gltf.md) parses JSON with
+# glTF input (issue 18: tools/certbox/gltf.c, docs/gltf.md) parses JSON with
 # jansson, the tool's optional dependency: found by pkg-config, the tool
 # reads glTF (-DCBX_GLTF); not found, it is built without (a note here, and
 # a clear error for a glTF file).  test_gltf needs it (deps.sh test).
-GLTFSRC      := src/scene/gltf.c
+GLTFSRC      := tools/certbox/gltf.c
 GLTFDIR      := /usr/share/assimp/models/glTF2
 HAVE_JANSSON := $(shell pkg-config --exists jansson 2>/dev/null && echo 1)
 ifeq ($(HAVE_JANSSON),1)
@@ -109,23 +109,23 @@ endif
 TOOL_STAMP   := $(B)/tool-config
 $(shell mkdir -p $(B) && { [ "$$(cat $(TOOL_STAMP) 2>/dev/null)" = "gltf=$(HAVE_JANSSON)" ] || echo "gltf=$(HAVE_JANSSON)" > $(TOOL_STAMP); })
 NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjansson-dev): run sh scripts/deps.sh test as root, or apt-get install libjansson-dev" >&2; exit 1; }
-$(B)/certbox: src/scene/main.c $(SCENESRC) $(GLTFSRC) src/scene/scene.h src/scene/gltf.h $(B)/libcertbox.a $(TOOL_STAMP)
+$(B)/certbox: tools/certbox/main.c $(SCENESRC) $(GLTFSRC) tools/certbox/scene.h tools/certbox/gltf.h $(B)/libcertbox.a $(TOOL_STAMP)
 	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
-	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) src/scene/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
+	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) tools/certbox/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
 # the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c)
 GLTFORACLE   := tests/gltf_oracle.c
-$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) src/scene/gltf.h $(B)/libcertbox.a
+$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
-	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Isrc/scene $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
-$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) src/scene/gltf.h $(LIBSRC) $(HEADERS)
+	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
+$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h $(LIBSRC) $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Isrc/scene -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
-$(B)/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
-	$(CC) $(ALLCFLAGS) -Itests -Isrc/scene $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
-$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) src/scene/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
+$(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
+	$(CC) $(ALLCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Isrc/scene -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itools/certbox -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # the tight mode with the fma-free two_prod (Dekker's product, src/cbx_eft.h)

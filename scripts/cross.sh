@@ -50,11 +50,11 @@ suite() {
   src=$name; extra=""
   case $name in *_nofma) src=${name%_nofma}; extra=-DCBX_NO_FMA ;; esac
   if [ "$name" = gltf ]; then
-    G="-DCBX_GLTF -Isrc/scene"
+    G="-DCBX_GLTF -Itools/certbox"
     # shellcheck disable=SC2086
-    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c src/scene/gltf.c $LIB -static -ljansson -lgmp -lm -o $B/test_gltf
+    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c tools/certbox/gltf.c $LIB -static -ljansson -lgmp -lm -o $B/test_gltf
     # shellcheck disable=SC2086
-    $XCC $F $G src/scene/main.c src/scene/scene.c src/scene/gltf.c $LIB -static -ljansson -lm -o $B/certbox
+    $XCC $F $G tools/certbox/main.c tools/certbox/scene.c tools/certbox/gltf.c $LIB -static -ljansson -lm -o $B/certbox
     ./build/test_gltf $GLTFDIR tests/data/gltf build/certbox "$GLTF_N" > $B/$name.host.txt 2>&1 || true
     $QEMU $B/test_gltf $GLTFDIR tests/data/gltf "$QEMU $B/certbox" "$GLTF_N" > $B/$name.arm.txt 2>&1 || true
     args="$GLTFDIR tests/data/gltf build/certbox $GLTF_N (ARM: $QEMU $B/certbox)"

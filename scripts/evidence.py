@@ -65,7 +65,7 @@ SUITES = [
     ('classes', ['20000', '1']), ('float', ['50000', '1']), ('imat', ['40000', '10000', '1']), ('ieee', []),
     ('ieee', ['ftz', '4']), ('ieee', ['ftzonly', '4']), ('ieee', ['daz', '4']), ('ieee', ['up', '8']), ('ieee', ['down', '8']), ('ieee', ['zero', '8']),
     ('scene', sorted(glob.glob(os.path.join(ROOT, 'examples', '*.scene')))),
-    # the scene tool's glTF reader (src/scene/gltf.c), against GMP, on
+    # the scene tool's glTF reader (tools/certbox/gltf.c), against GMP, on
     # assimp-testmodels and tests/data/gltf; it runs the tool build/certbox
     ('gltf', ['/usr/share/assimp/models/glTF2', 'tests/data/gltf', 'build/certbox', '20000']),
 ]
@@ -279,28 +279,28 @@ def coverage(raw, b):
         sh([CC] + FLAGS + ['-O0', '--coverage', '-Isrc', '-c', s, '-o', o])
         objs.append(o)
     scene = []
-    for s in ['src/scene/scene.c']:
+    for s in ['tools/certbox/scene.c']:
         o = os.path.join(b, 'obj', 'scene.o')
-        sh([CC] + FLAGS + ['-O0', '-Isrc', '-Isrc/scene', '-c', s, '-o', o])
+        sh([CC] + FLAGS + ['-O0', '-Isrc', '-Itools/certbox', '-c', s, '-o', o])
         scene.append(o)
     same = []
     gltf = []
     if HAVE_JANSSON:
-        # the glTF reader and test_gltf's oracle (not measured: src/scene is
+        # the glTF reader and test_gltf's oracle (not measured: tools/certbox is
         # left out below, like scene.c)
-        for s, o in [('src/scene/gltf.c', 'gltf.o'), ('tests/gltf_oracle.c', 'gltf_oracle.o')]:
+        for s, o in [('tools/certbox/gltf.c', 'gltf.o'), ('tests/gltf_oracle.c', 'gltf_oracle.o')]:
             o = os.path.join(b, 'obj', o)
             sh([CC] + FLAGS + ['-O0', '-DCBX_GLTF'] + jansson_flags('--cflags')
-               + ['-Isrc', '-Isrc/scene', '-Itests', '-c', s, '-o', o])
+               + ['-Isrc', '-Itools/certbox', '-Itests', '-c', s, '-o', o])
             gltf.append(o)
     for i, (name, args) in enumerate(SUITES):
         exe = os.path.join(b, 'test_' + name)
         if name == 'gltf' and not HAVE_JANSSON:
             continue
         if not os.path.exists(exe):
-            extra = scene + ['-Isrc/scene'] if name == 'scene' else []
+            extra = scene + ['-Itools/certbox'] if name == 'scene' else []
             if name == 'gltf':
-                extra = gltf + ['-DCBX_GLTF', '-Isrc/scene'] + jansson_flags('--cflags') + jansson_flags('--libs')
+                extra = gltf + ['-DCBX_GLTF', '-Itools/certbox'] + jansson_flags('--cflags') + jansson_flags('--libs')
             sh([CC] + FLAGS + ['-O0', '--coverage', '-Isrc', '-Itests', 'tests/test_%s.c' % name,
                                'tests/exact_util.c'] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
         r = sh([exe] + args, check=False)

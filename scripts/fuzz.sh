@@ -9,7 +9,7 @@
 #          other).
 #
 # gltf (tests/fuzz/fuzz_gltf.c): the scene tool's glTF reader
-# (src/scene/gltf.c) on arbitrary file contents, against the exact oracle
+# (tools/certbox/gltf.c) on arbitrary file contents, against the exact oracle
 # of test_gltf (tests/gltf_oracle.c); it needs jansson (pkg-config
 # jansson): without it that harness is skipped with a message (not a
 # failure).  Its seeds are files of tests/data/gltf/ and small models of
@@ -121,8 +121,8 @@ for h in $HARNESSES; do
         fi
         echo "fuzz: building $B/fuzz_$h" >&2
         # shellcheck disable=SC2046,SC2086
-        $NICE "$CLANG" $CFLAGS -DCBX_GLTF $(pkg-config --cflags jansson) -Isrc -Isrc/scene -Itests \
-            tests/fuzz/fuzz_gltf.c tests/gltf_oracle.c src/scene/gltf.c src/*.c \
+        $NICE "$CLANG" $CFLAGS -DCBX_GLTF $(pkg-config --cflags jansson) -Isrc -Itools/certbox -Itests \
+            tests/fuzz/fuzz_gltf.c tests/gltf_oracle.c tools/certbox/gltf.c src/*.c \
             $(pkg-config --libs jansson) -lgmp -lm -o "$B/fuzz_$h" \
             || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
         continue

@@ -28,7 +28,7 @@
 #                 also reads every glTF file of assimp-testmodels and
 #                 tests/data/gltf and runs build/certbox on four).  test_gltf
 #                 runs only when pkg-config finds jansson; without it the
-#                 mutants of src/scene/gltf.c are SKIPPED (reported, not a
+#                 mutants of tools/certbox/gltf.c are SKIPPED (reported, not a
 #                 failure)
 #   MUT_SEED      seed of the random cases     (default 1)
 #   MUT_TIMEOUT   seconds per test run         (default 30)
@@ -162,7 +162,7 @@ rm -rf "$BASE/build"
 
 TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_eft test_float test_classes"
 BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_eft build/test_float build/test_classes"
-# the scene tool's glTF reader (src/scene/gltf.c): test_gltf, which also runs
+# the scene tool's glTF reader (tools/certbox/gltf.c): test_gltf, which also runs
 # the tool; only with jansson (the Makefile's optional dependency)
 GLTF=0
 if pkg-config --exists jansson 2>/dev/null; then
@@ -170,7 +170,7 @@ if pkg-config --exists jansson 2>/dev/null; then
     TESTS="$TESTS test_gltf"
     BINS="$BINS build/test_gltf build/certbox"
 else
-    echo "mutants: jansson (libjansson-dev) not found: test_gltf is not run; the mutants of src/scene/gltf.c are skipped"
+    echo "mutants: jansson (libjansson-dev) not found: test_gltf is not run; the mutants of tools/certbox/gltf.c are skipped"
 fi
 args_of() {
     case $1 in
@@ -229,7 +229,7 @@ echo "mutants: baseline passes ($(( $(date +%s) - T0 )) s)"
 total=0; caught=0; survivors=""; bad=""; skipped=""
 while IFS=$'\t' read -r id file desc; do
     [ -n "$id" ] || continue
-    if [ "$file" = src/scene/gltf.c ] && [ $GLTF = 0 ]; then
+    if [ "$file" = tools/certbox/gltf.c ] && [ $GLTF = 0 ]; then
         skipped="$skipped $id"
         printf '%-16s %-20s %-68s %s\n' "$id" "$file" "$desc" "SKIPPED (no jansson: test_gltf not built)"
         continue

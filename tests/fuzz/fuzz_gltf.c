@@ -1,5 +1,5 @@
 /*
- * libFuzzer harness: the glTF reader (src/scene/gltf.c) against the exact
+ * libFuzzer harness: the glTF reader (tools/certbox/gltf.c) against the exact
  * oracle of tests/test_gltf.c (tests/gltf_oracle.c, shared: one copy).
  *
  * Input: the bytes of a .gltf or .glb file.  gltf_load reads files, so
