@@ -1,11 +1,12 @@
 #!/bin/sh
 # make proof-teeth: does each contract have teeth?  Each case copies the
 # sources to a scratch directory, replaces one function body by a weaker one
-# that is still sound (a wider box) but no longer tight, proves that
-# function as proofs/job.sh's first pass does (CVC4, 10 s a goal), and
-# requires the named goal (a tightness postcondition or the assertion that
-# carries it) to stay unproved: the contract, not only the tests, rejects
-# the weakened body.  A weakened body is false against the contract, so no
+# (most are still sound, a wider box, but no longer tight; two break a
+# promise: an end not widened, a bounded axis given as the whole line),
+# proves that function as proofs/job.sh's first pass does (CVC4, 10 s a
+# goal), and requires the named goal (the postcondition or the assertion
+# that carries the promise) to stay unproved: the contract, not only the
+# tests, rejects the weakened body.  A weakened body is false against the contract, so no
 # time limit would prove it; the goal's name shows it failed for that
 # reason.
 # Usage: sh scripts/proof_teeth.sh  (from the checkout's root)
@@ -17,14 +18,17 @@ pass=0; fail=0
 # prove FUNCTION in TU (only the properties PROPS, a comma list of names,
 # if not empty: every assertion after the change must be among them, or a
 # false one would serve as a hypothesis), require an unproved goal whose
-# name matches GOAL
+# name matches GOAL; SPLIT (optional, default -wp-split): WP's splitting
+# option, or "-" for none (a postcondition that splits into a thousand
+# parts is quicker refuted whole)
 case_() {
   name=$1; file=$2; fct=$3; tu=$4; props=$5; goal=$6; old=$7; new=$8
+  split=${9:--wp-split}; [ "$split" = - ] && split=''
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
   fam=64; case $tu in *_f.c) fam=32;; esac
   (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
-     -wp -wp-rte -wp-split -wp-prover "cvc4r$fam" -wp-timeout 10 -wp-par 1 \
+     -wp -wp-rte $split -wp-prover "cvc4r$fam" -wp-timeout 10 -wp-par 1 \
      -wp-cache none -wp-fct "$fct" ${props:+-wp-prop "$props"} > "$d/wp.log" 2>&1) || true
   # unproved: "[wp] [Failed] Goal G" (several provers) or "[wp] [PROVER] Goal G : Timeout" (one)
   bad=$(grep -E '^\[wp\] \[(Failed|Timeout|Unknown)\] Goal|Goal typed_[A-Za-z0-9_]+ : (Timeout|Unknown|Failed|Stepout)' "$d/wp.log" | sed 's/.*Goal typed_//; s/ .*//')
@@ -56,6 +60,17 @@ case_ imat-lo-widened-twice src/cbx_ikernel.h cbx_irow proofs/imat.c tight tight
 case_ imat-hi-not-widened src/cbx_ikernel.h cbx_irow proofs/imat.c sound sound \
   "    r.hi = cbx_add_rn(shi, w);" \
   "    r.hi = cbx_add_rn(shi, CBX_C(0.0));" &
+# 6. motion: a full axis's lower end at most -1 (sound: below both ends'
+#    lower ends, but loose wherever the exact end is above -1)
+case_ motion-lo-loose src/cbx_motion.c mot_axis_union proofs/all.c tight tight \
+  "        r.lo = cbx_min2(r0, r1);" \
+  "        r.lo = cbx_min2(cbx_min2(r0, r1), -1.0);" - &
+# 7. motion: a full axis (a bounded image) given as the whole line with
+#    CBX_OK (the containment postcondition holds; the finite ends it
+#    promises for full rows must fail)
+case_ motion-full-whole src/cbx_motion.c mot_axis_union proofs/all.c sound sound \
+  "        r.lo = cbx_min2(r0, r1);" \
+  "        r.lo = cbx_ninf();" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"
@@ -65,7 +80,6 @@ done
 # they are listed, not run:
 echo "proof-teeth: gap  tight mode body replaced by cbx_transform_box: no optimality postcondition yet"
 echo "proof-teeth: gap  sphere radius doubled: no tightness postcondition on cbx_sphere_box yet"
-echo "proof-teeth: gap  motion returning the whole space with CBX_OK: no finite-end postcondition yet"
 echo "proof-teeth: $pass caught, $fail not caught"
 echo "$pass passed, $fail failed"
 [ $fail = 0 ]

@@ -172,6 +172,25 @@
       && ((!map_fin(m0, m1, m2, t) || !map_fin(n0, n1, n2, u)) ==>
           (\is_minus_infinity(lo) && \is_plus_infinity(hi)));
 
+    // Tightness of one full axis of cbx_motion_box: the exact end over the
+    // shutter interval is the smaller (larger) of the two rows' exact ends
+    // (M(s) p is affine in s, so its extremes are at s = 0 or s = 1); each
+    // end within 12 u S + 2^-1065 of it, S the larger row magnitude.
+    predicate mot_tight(double lo, double hi,
+                        double m0, double m1, double m2, double t,
+                        double n0, double n1, double n2, double u,
+                        double l0, double h0, double l1, double h1, double l2, double h2) =
+      (row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+       && row_full(n0, n1, n2, u, l0, h0, l1, h1, l2, h2)) ==>
+        (lo >= \min(row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2),
+                    row_lo(n0, n1, n2, u, l0, h0, l1, h1, l2, h2))
+               - (0x1.8p-50 * \max(row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2),
+                                   row_mag(n0, n1, n2, u, l0, h0, l1, h1, l2, h2)) + 0x1p-1065)
+         && hi <= \max(row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2),
+                       row_hi(n0, n1, n2, u, l0, h0, l1, h1, l2, h2))
+               + (0x1.8p-50 * \max(row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2),
+                                   row_mag(n0, n1, n2, u, l0, h0, l1, h1, l2, h2)) + 0x1p-1065));
+
     // Axis i: both rows full, or neither (cbx_motion_box's CBX_OK needs it).
     predicate mot_same(cbx_affine *a0, cbx_affine *a1, cbx_box *b, integer i) =
       row_full(a0->m[i][0], a0->m[i][1], a0->m[i][2], a0->m[i][3],

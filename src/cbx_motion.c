@@ -113,6 +113,8 @@ static void mot_points_hi(double hi, double q0, double q1,
     assigns \nothing;
     ensures sound: mot_axis(\result.lo, \result.hi, m0, m1, m2, t, n0, n1, n2, u,
                             l0, h0, l1, h1, l2, h2);
+    ensures tight: mot_tight(\result.lo, \result.hi, m0, m1, m2, t, n0, n1, n2, u,
+                             l0, h0, l1, h1, l2, h2);
     ensures ok: \result.ok != 0 <==>
       (row_full(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
        <==> row_full(n0, n1, n2, u, l0, h0, l1, h1, l2, h2));
@@ -161,6 +163,9 @@ typedef struct mot_box { cbx_box o; int ok; } mot_box;
     ensures ax0: mot_axis(\result.o.lo[0], \result.o.hi[0], a00, a01, a02, a03, b00, b01, b02, b03, l0, h0, l1, h1, l2, h2);
     ensures ax1: mot_axis(\result.o.lo[1], \result.o.hi[1], a10, a11, a12, a13, b10, b11, b12, b13, l0, h0, l1, h1, l2, h2);
     ensures ax2: mot_axis(\result.o.lo[2], \result.o.hi[2], a20, a21, a22, a23, b20, b21, b22, b23, l0, h0, l1, h1, l2, h2);
+    ensures t0: mot_tight(\result.o.lo[0], \result.o.hi[0], a00, a01, a02, a03, b00, b01, b02, b03, l0, h0, l1, h1, l2, h2);
+    ensures t1: mot_tight(\result.o.lo[1], \result.o.hi[1], a10, a11, a12, a13, b10, b11, b12, b13, l0, h0, l1, h1, l2, h2);
+    ensures t2: mot_tight(\result.o.lo[2], \result.o.hi[2], a20, a21, a22, a23, b20, b21, b22, b23, l0, h0, l1, h1, l2, h2);
     ensures ok: \result.ok != 0 <==>
       ((row_full(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2) <==> row_full(b00, b01, b02, b03, l0, h0, l1, h1, l2, h2))
        && (row_full(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2) <==> row_full(b10, b11, b12, b13, l0, h0, l1, h1, l2, h2))

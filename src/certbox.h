@@ -225,7 +225,10 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_bo
  * the interval; cbx_motion_box returns that union, outward rounded.
  * Proven: on every axis where both rows are full (finite, in the domain),
  * for every real s in [0, 1] and every corner c of the box,
- *     out->lo[i] <= (M(s) c)_i <= out->hi[i]   (exact reals);
+ *     out->lo[i] <= (M(s) c)_i <= out->hi[i]   (exact reals),
+ * and each end is within 12 u S + 2^-1065 of the exact end over the
+ * interval (the smaller lower, the larger upper end of the two rows' exact
+ * ends; S the larger of the two rows' magnitudes, u = 2^-53);
  * on axes where neither row is full (half-spaces, out-of-domain pairs)
  * every finite end bounds (M(s) p)_i for every real point p and s; where
  * one row is full and the other not, or a row has an infinite entry, the
@@ -251,6 +254,9 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_bo
       ensures axis0: mot_axis(out->lo[0], out->hi[0], CBX_ROWV(a0, 0, Pre), CBX_ROWV(a1, 0, Pre), CBX_BV(in, Pre));
       ensures axis1: mot_axis(out->lo[1], out->hi[1], CBX_ROWV(a0, 1, Pre), CBX_ROWV(a1, 1, Pre), CBX_BV(in, Pre));
       ensures axis2: mot_axis(out->lo[2], out->hi[2], CBX_ROWV(a0, 2, Pre), CBX_ROWV(a1, 2, Pre), CBX_BV(in, Pre));
+      ensures tight0: mot_tight(out->lo[0], out->hi[0], CBX_ROWV(a0, 0, Pre), CBX_ROWV(a1, 0, Pre), CBX_BV(in, Pre));
+      ensures tight1: mot_tight(out->lo[1], out->hi[1], CBX_ROWV(a0, 1, Pre), CBX_ROWV(a1, 1, Pre), CBX_BV(in, Pre));
+      ensures tight2: mot_tight(out->lo[2], out->hi[2], CBX_ROWV(a0, 2, Pre), CBX_ROWV(a1, 2, Pre), CBX_BV(in, Pre));
       ensures ok_iff: \result == CBX_OK <==>
         \at(row_ok(a0, in, 0) && row_ok(a0, in, 1) && row_ok(a0, in, 2)
             && row_ok(a1, in, 0) && row_ok(a1, in, 1) && row_ok(a1, in, 2)
