@@ -65,6 +65,9 @@ static cbox_res cbox_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
     /*@ assert g1b: (\abs(m1*c1) + \abs(m1*h1)) * (1 - CBX_U4) - 3*CBX_ETA <= g1 <= (\abs(m1*c1) + \abs(m1*h1)) * (1 + CBX_U4) + 4*CBX_ETA; */
     cbx_fp g2 = cbx_add_rn(cbx_abs(p2), q2);
     /*@ assert g2b: (\abs(m2*c2) + \abs(m2*h2)) * (1 - CBX_U4) - 3*CBX_ETA <= g2 <= (\abs(m2*c2) + \abs(m2*h2)) * (1 + CBX_U4) + 4*CBX_ETA; */
+    /* the computed scale against the exact one (w2 in one step took 18 s) */
+    /*@ assert gs: \abs(t) + g0 + g1 + g2
+                   <= crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 + CBX_U4) + 12*CBX_ETA; */
     cbx_fp w = cbx_widening(t, g0, g1, g2);
     /*@ assert w1: w >= CBX_U5H * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 - CBX_U16) + CBX_ETA64 - CBX_ETA8; */
     /*@ assert w2: w <= CBX_U5H * crow_mag(m0, m1, m2, t, c0, c1, c2, h0, h1, h2) * (1 + CBX_U16) + CBX_ETA256 + CBX_ETA8; */
