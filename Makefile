@@ -109,21 +109,21 @@ endif
 TOOL_STAMP   := $(B)/tool-config
 $(shell mkdir -p $(B) && { [ "$$(cat $(TOOL_STAMP) 2>/dev/null)" = "gltf=$(HAVE_JANSSON)" ] || echo "gltf=$(HAVE_JANSSON)" > $(TOOL_STAMP); })
 NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjansson-dev): run sh scripts/deps.sh test as root, or apt-get install libjansson-dev" >&2; exit 1; }
-$(B)/certbox: tools/certbox/main.c $(SCENESRC) $(GLTFSRC) tools/certbox/scene.h tools/certbox/gltf.h $(B)/libcertbox.a $(TOOL_STAMP)
+$(B)/certbox: tools/certbox/main.c $(SCENESRC) $(GLTFSRC) tools/certbox/scene.h tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a $(TOOL_STAMP)
 	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
 	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) tools/certbox/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
 # the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c)
 GLTFORACLE   := tests/gltf_oracle.c
-$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h $(B)/libcertbox.a
+$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
 	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
-$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h $(LIBSRC) $(HEADERS)
+$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(LIBSRC) $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
-$(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
+$(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
-$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
 	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itools/certbox -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h

@@ -24,6 +24,7 @@
  * numbers (armhf under qemu-user, scripts/cross.sh) */
 #define _FILE_OFFSET_BITS 64
 #include "gltf.h"
+#include "readall.h"
 
 #include <errno.h>
 #include <float.h>
@@ -310,36 +311,6 @@ static void note(ctx *c, const char *fmt, ...)
     fprintf(c->notes, "%s: note: %s\n", c->path, e);
 }
 
-static int read_all(const char *path, unsigned char **out, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    *out = NULL;
-    *n = 0;
-    if (!f)
-        return -1;
-    size_t cap = 1 << 16, len = 0, r;
-    unsigned char *b = malloc(cap);
-    while (b && (r = fread(b + len, 1, cap - len, f)) > 0) {
-        len += r;
-        if (len == cap) {
-            unsigned char *b2 = cap < ((size_t)1 << 30) ? realloc(b, 2 * cap) : NULL;
-            if (!b2) { free(b); b = NULL; errno = EFBIG; break; }
-            b = b2;
-            cap *= 2;
-        }
-    }
-    int bad = ferror(f);
-    fclose(f);
-    if (!b || bad) {
-        free(b);
-        if (bad) errno = EIO;
-        return -1;
-    }
-    *out = b;
-    *n = len;
-    return 0;
-}
-
 /* ---- JSON helpers (errors name the JSON pointer) ---------------------- */
 /* Array `key` of root (NULL and size 0 if absent); -1 if not an array. */
 static int top_array(ctx *c, const char *key, json_t **arr, size_t *n)
@@ -565,7 +536,7 @@ static int open_rel(ctx *c, const char *uri, const char *ptr, unsigned char **da
     size_t dl = strlen(c->dir);
     if (strncmp(real, c->dir, dl) != 0 || (real[dl] != '/' && strcmp(c->dir, "/") != 0))
         return fail(c, "%s/uri: '%s' resolves outside the file's folder (a symbolic link?): refused", ptr, uri);
-    if (read_all(real, data, n) != 0)
+    if (tool_read_all(real, data, n) != 0)
         return fail(c, "%s/uri: cannot read '%s': %s", ptr, dec, strerror(errno));
     return 0;
 }
@@ -614,6 +585,18 @@ static int load_buffer(ctx *c, long long k)
     return 0;
 }
 
+/* The fields every bufferView V (at JSON pointer p) must have: its buffer
+ * index, byteOffset (0 if absent) and byteLength; -1 after an error. */
+static int view_head(ctx *c, json_t *V, const char *p, long long *b, long long *off, long long *bl)
+{
+    if (check_common(c, V, p) != 0
+        || need_uint(c, V, "buffer", p, (long long)c->nbuffers, "buffer", b) != 0
+        || get_uint(c, V, "byteOffset", p, -1, "", 0, off) < 0
+        || need_uint(c, V, "byteLength", p, -1, "", bl) != 0)
+        return -1;
+    return 0;
+}
+
 /* The bytes of bufferView v: *base, *len, *stride (0 if absent). */
 static int buffer_view(ctx *c, long long v, const unsigned char **base, size_t *len, size_t *stride)
 {
@@ -621,10 +604,7 @@ static int buffer_view(ctx *c, long long v, const unsigned char **base, size_t *
     char p[64];
     long long b, off, bl, st;
     snprintf(p, sizeof p, "/bufferViews/%lld", v);
-    if (check_common(c, V, p) != 0
-        || need_uint(c, V, "buffer", p, (long long)c->nbuffers, "buffer", &b) != 0
-        || get_uint(c, V, "byteOffset", p, -1, "", 0, &off) < 0
-        || need_uint(c, V, "byteLength", p, -1, "", &bl) != 0
+    if (view_head(c, V, p, &b, &off, &bl) != 0
         || get_uint(c, V, "byteStride", p, -1, "", 0, &st) < 0)
         return -1;
     if (st != 0 && (st < 4 || st > 252))
@@ -1218,7 +1198,7 @@ void gltf_free(gl_doc *d)
 static int load(ctx *c)
 {
     gl_doc *d = c->d;
-    if (read_all(c->path, &d->file, &d->nfile) != 0)
+    if (tool_read_all(c->path, &d->file, &d->nfile) != 0)
         return fail(c, "cannot read: %s", strerror(errno));
     if (d->nfile >= 4 && memcmp(d->file, "glTF", 4) == 0) {
         if (parse_glb(c) != 0) return -1;
@@ -1263,10 +1243,7 @@ static int load(ctx *c)
         char p[64];
         long long b, off, bl, blen;
         snprintf(p, sizeof p, "/bufferViews/%zu", k);
-        if (check_common(c, V, p) != 0
-            || need_uint(c, V, "buffer", p, (long long)c->nbuffers, "buffer", &b) != 0
-            || get_uint(c, V, "byteOffset", p, -1, "", 0, &off) < 0
-            || need_uint(c, V, "byteLength", p, -1, "", &bl) != 0
+        if (view_head(c, V, p, &b, &off, &bl) != 0
             || need_uint(c, json_array_get(bufs, (size_t)b), "byteLength", "/buffers", -1, "", &blen) != 0) {
             free(checked);
             return -1;

@@ -16,6 +16,7 @@
  * matrices.
  */
 #include "scene.h"
+#include "readall.h"
 
 #include <errno.h>
 #include <math.h>
@@ -460,31 +461,19 @@ int scene_parse_buf(scene *s, const char *text, size_t n, const char *file, char
 
 int scene_load(scene *s, const char *path, char *err, size_t errlen)
 {
-    FILE *f = fopen(path, "rb");
+    unsigned char *b;
+    size_t n;
     memset(s, 0, sizeof *s);
-    if (!f) {
+    int r = tool_read_all(path, &b, &n);
+    if (r == -1) {
         snprintf(err, errlen, "%s:0: cannot open: %s", path, strerror(errno));
         return -1;
     }
-    size_t cap = 1 << 16, n = 0;
-    char *text = malloc(cap + 1);
-    size_t r;
-    while (text && (r = fread(text + n, 1, cap - n, f)) > 0) {
-        n += r;
-        if (n == cap) {
-            char *t2 = cap < ((size_t)1 << 30) ? realloc(text, 2 * cap + 1) : NULL;
-            if (!t2) { free(text); text = NULL; break; }
-            text = t2;
-            cap *= 2;
-        }
-    }
-    int rd_err = ferror(f);
-    fclose(f);
-    if (!text || rd_err) {
-        free(text);
+    if (r != 0) {
         snprintf(err, errlen, "%s:0: cannot read the file (or it is above 1 GB)", path);
         return -1;
     }
+    char *text = (char *)b;
     text[n] = '\0';
     int rc = scene_parse_buf(s, text, n, path, err, errlen);
     free(text);
@@ -693,7 +682,10 @@ static int maps_build(const scene *s, sc_maps *m)
                 bad = m->fbad[f] || m->sbad[p] || imap_compose(&m->F[f], &m->S[p], &cur) != 0;
             }
             imap_hull(&s->ops[N->first].a, &s->ops[N->first + 1].a, &o);
-            bad = bad || imap_compose(&cur, &o, &r) != 0;
+            if (bad)
+                identity_map(&r);       /* marked bad below: never read as a map */
+            else
+                bad = imap_compose(&cur, &o, &r) != 0;
             m->fidx[n] = nf;
             m->F[nf] = r;
             m->fbad[nf++] = (unsigned char)bad;
