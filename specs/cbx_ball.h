@@ -79,5 +79,39 @@
     // A larger radius still bounds.
     lemma sq_bound_up: \forall real b0, b1, b2, r, q;
       sq_bound(b0, b1, b2, r) ==> r <= q ==> sq_bound(b0, b1, b2, q);
+
+    // The exact row norm |b| = sqrt(b.b) (the exact half-width of axis i):
+    // the tightness statements (specs/cbx_spec.h, ball_tight) compare the
+    // ends with it; the lemmas below are what src/cbx_sphere.c uses of it
+    // (proven in pass L: in WP's float context CVC4 does not even find
+    // |x| |x| = x x).
+    logic real rnorm3(real a0, real a1, real a2) = \sqrt(nrm3(a0, a1, a2));
+    // One step each (the provers do not chain instances in the float context).
+    lemma abs_sq: \forall real x; \abs(x) * \abs(x) == x * x;
+    lemma rnorm3_def: \forall real a0, a1, a2;
+      rnorm3(a0, a1, a2) >= 0 && rnorm3(a0, a1, a2) * rnorm3(a0, a1, a2) == nrm3(a0, a1, a2);
+    // (c rho + e)^2 >= c^2 rho^2 + e^2 for nonnegative c, rho, e.
+    lemma sq_sum_up: \forall real n, rho, c, e;
+      0 <= rho ==> rho * rho == n ==> 0 <= c ==> 0 <= e ==>
+      n * (c * c) + e * e <= (c * rho + e) * (c * rho + e);
+    // An entry at least m in magnitude has a square at least m^2.
+    lemma sq_ge: \forall real x, m; 0 <= m <= \abs(x) ==> sq_le(m, x);
+    // (x0 + x1 + x2)^2 <= 4 |x|^2 (Cauchy-Schwarz with (1, 1, 1), 3 <= 4),
+    // from its sum-of-squares identity.
+    lemma sum4_id: \forall real x0, x1, x2;
+      4 * nrm3(x0, x1, x2) - (x0 + x1 + x2) * (x0 + x1 + x2)
+      == nrm3(x0 - x1, x0 - x2, x1 - x2) + nrm3(x0, x1, x2);
+    lemma sum4: \forall real x0, x1, x2;
+      (x0 + x1 + x2) * (x0 + x1 + x2) <= 4 * nrm3(x0, x1, x2);
+    // |(|a0|, |a1|, |a2|)| = |a|.
+    lemma nrm3_abs_t: \forall real a0, a1, a2;
+      \abs(a0) * \abs(a0) == a0 * a0 ==> \abs(a1) * \abs(a1) == a1 * a1 ==>
+      \abs(a2) * \abs(a2) == a2 * a2 ==>
+      nrm3(\abs(a0), \abs(a1), \abs(a2)) == nrm3(a0, a1, a2);
+    lemma nrm3_abs: \forall real a0, a1, a2;
+      nrm3(\abs(a0), \abs(a1), \abs(a2)) == nrm3(a0, a1, a2);
+    // Entrywise squares summed.
+    lemma sq_le_sum: \forall real s0, s1, s2, y0, y1, y2;
+      sq_le(s0, y0) ==> sq_le(s1, y1) ==> sq_le(s2, y2) ==> nrm3(s0, s1, s2) <= nrm3(y0, y1, y2);
 */
 #endif /* CBX_BALL_H */

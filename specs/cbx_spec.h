@@ -464,6 +464,13 @@
       || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
       || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
 
+    // Tightness of a ball's axis: each end within 80u (|t| + |b|) + 2^-1064
+    // of the exact end t -+ |b| (binary32: 80u and 2^-139).
+    logic real ball_gap(real t, real rho) = CBX_U80 * (\abs(t) + rho) + CBX_ETA1024;
+    predicate ball_tight(real lo, real hi, real b0, real b1, real b2, real t) =
+      (t - rnorm3(b0, b1, b2)) - ball_gap(t, rnorm3(b0, b1, b2)) <= lo
+      && hi <= (t + rnorm3(b0, b1, b2)) + ball_gap(t, rnorm3(b0, b1, b2));
+
     predicate sph_dom(real m0, real m1, real m2, real t) =
       cls(m0, m0, CBX_SB, CBX_SB) && cls(m1, m1, CBX_SB, CBX_SB)
       && cls(m2, m2, CBX_SB, CBX_SB) && -CBX_RT <= t <= CBX_RT;
@@ -472,7 +479,8 @@
       ((\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
         && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
          (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
-          && ball_axis(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])))
+          && ball_axis(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])
+          && ball_tight(o->lo[i], o->hi[i], a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])))
       && (!(\is_finite(a->m[i][0]) && \is_finite(a->m[i][1]) && \is_finite(a->m[i][2])
         && \is_finite(a->m[i][3]) && sph_dom(a->m[i][0], a->m[i][1], a->m[i][2], a->m[i][3])) ==>
          whole_axis(o, i));
@@ -500,7 +508,9 @@
       (ell_row_dom(center, radii, rot, i) ==>
          (\is_finite(o->lo[i]) && \is_finite(o->hi[i])
           && ball_axis(o->lo[i], o->hi[i], rot[i][0]*radii[0], rot[i][1]*radii[1],
-                       rot[i][2]*radii[2], center[i])))
+                       rot[i][2]*radii[2], center[i])
+          && ball_tight(o->lo[i], o->hi[i], rot[i][0]*radii[0], rot[i][1]*radii[1],
+                        rot[i][2]*radii[2], center[i])))
       && (!ell_row_dom(center, radii, rot, i) ==> whole_axis(o, i));
 
     predicate sph_row_dom(cbx_affine *a, integer i) =

@@ -220,7 +220,9 @@ cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out);
  * NaN -> CBX_EINVAL and the whole space; outside the domain -> CBX_ERANGE
  * and those axes [-inf, +inf].  Proven: on every axis in the domain, for
  * every real point p with p.p <= 1, lo_i <= (M p + T)_i <= hi_i (exact reals;
- * for the ellipsoid M_ij = rot[i][j] * radii[j] exactly): specs/cbx_ball.h. */
+ * for the ellipsoid M_ij = rot[i][j] * radii[j] exactly): specs/cbx_ball.h;
+ * and each end within 80 u (|T_i| + |M_i|) + 2^-1064 of the exact end
+ * T_i -+ |M_i| (|M_i| the exact row norm; binary32: 2^-139): ball_tight. */
 /*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
     assigns *out;
     behavior nan_input:

@@ -75,6 +75,8 @@
 #define in_dom508 in_dom_ep_f
 #define cls_254 cls_ep_f
 #define aff_nan aff_nan_f
+#define ball_gap ball_gap_f
+#define ball_tight ball_tight_f
 #define sph_dom sph_dom_f
 #define sph_axis sph_axis_f
 #define ell_dom ell_dom_f
@@ -152,6 +154,8 @@
 #undef in_dom508
 #undef cls_254
 #undef aff_nan
+#undef ball_gap
+#undef ball_tight
 #undef sph_dom
 #undef sph_axis
 #undef ell_dom

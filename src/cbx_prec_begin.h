@@ -43,6 +43,7 @@
 #define CBX_U8   0x1p-50      /* 8u                                  */
 #define CBX_U12  0x1.8p-50    /* 12u: the proven tightness factor    */
 #define CBX_U16  0x1p-49      /* 16u                                 */
+#define CBX_U80  0x1.4p-47    /* 80u: a ball's proven tightness factor */
 /* absolute (units of eta = 2^-1074) */
 #define CBX_ETA    0x1p-1074
 #define CBX_ETA2   0x1p-1073
@@ -53,6 +54,7 @@
 #define CBX_ETA128 0x1p-1067  /* the widening's absolute term        */
 #define CBX_ETA256 0x1p-1066
 #define CBX_ETA512 0x1p-1065  /* the proven tightness absolute term  */
+#define CBX_ETA1024 0x1p-1064 /* a ball's tightness absolute term    */
 /* range (the largest finite double is about 2^1024) */
 #define CBX_FMAX 0x1.fffffffffffffp1023 /* the largest finite value */
 #define CBX_RT   0x1p1018     /* |t| and every product |m c|           */
@@ -67,6 +69,8 @@
 #define CBX_STINY 0x1p-300    /* rows below this are rescaled ...      */
 #define CBX_SUP   0x1p600     /* ... by this power of 2 ...            */
 #define CBX_SDN   0x1p-600    /* ... and their radius scaled back      */
+#define CBX_SQE   0x1p-533    /* sqrt of ball_radius's absolute error  */
+#define CBX_SA    0x1p-532    /* ball_radius's absolute tightness term */
 #define CBX_EB    0x1p254     /* |rot_ij|, |radii_j| of an ellipsoid   */
 #define CBX_EP    0x1p508     /* |rot_ij radii_j|                      */
 /* The magnitude classes of the domain: |m| <= bm and |c| <= bc with
@@ -103,6 +107,7 @@
 #define CBX_U8   0x1p-21
 #define CBX_U12  0x1.8p-21
 #define CBX_U16  0x1p-20
+#define CBX_U80  0x1.4p-18
 /* absolute (units of eta = 2^-149) */
 #define CBX_ETA    0x1p-149
 #define CBX_ETA2   0x1p-148
@@ -113,6 +118,7 @@
 #define CBX_ETA128 0x1p-142
 #define CBX_ETA256 0x1p-141
 #define CBX_ETA512 0x1p-140
+#define CBX_ETA1024 0x1p-139
 /* range (the largest finite float is about 2^128) */
 #define CBX_FMAX 0x1.fffffep127
 #define CBX_RT   0x1p122
@@ -127,6 +133,8 @@
 #define CBX_STINY 0x1p-30
 #define CBX_SUP   0x1p90
 #define CBX_SDN   0x1p-90
+#define CBX_SQE   0x1p-71
+#define CBX_SA    0x1p-70
 #define CBX_EB    0x1p30
 #define CBX_EP    0x1p60
 /* magnitude classes: bm bc = 2^122 */

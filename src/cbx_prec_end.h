@@ -42,6 +42,7 @@
 #undef CBX_U5H
 #undef CBX_U8
 #undef CBX_U12
+#undef CBX_U80
 #undef CBX_U16
 #undef CBX_ETA
 #undef CBX_ETA2
@@ -52,6 +53,7 @@
 #undef CBX_ETA128
 #undef CBX_ETA256
 #undef CBX_ETA512
+#undef CBX_ETA1024
 #undef CBX_FMAX
 #undef CBX_RT
 #undef CBX_R19
@@ -64,6 +66,8 @@
 #undef CBX_STINY
 #undef CBX_SUP
 #undef CBX_SDN
+#undef CBX_SQE
+#undef CBX_SA
 #undef CBX_EB
 #undef CBX_EP
 #undef CBX_CLASS_HEAD

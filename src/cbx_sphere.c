@@ -18,6 +18,108 @@
 #include "cbx_domain.h"
 #include "cbx_endpoints.h"
 
+/* Lemma functions (empty bodies) on the exact norm rnorm3 = sqrt(b . b)
+ * (specs/cbx_ball.h), for the tightness postconditions: each chains
+ * one-step lemmas of specs/cbx_ball.h (proven in pass L), one assertion a
+ * step, where the float goals need the result. */
+
+/* A number whose square is at most c^2 b.b + a^2 is at most c |b| + a
+ * (c = 1 + 10u, a = CBX_SQE: ball_radius's square root). */
+/*@ requires pos: 0 <= r;
+    requires sq: r * r <= nrm3(b0, b1, b2) * ((1 + 10*CBX_U) * (1 + 10*CBX_U)) + CBX_SQE * CBX_SQE;
+    assigns \nothing;
+    ensures up: r <= (1 + 10*CBX_U) * rnorm3(b0, b1, b2) + CBX_SQE;
+*/
+static void rn_up(cbx_fp b0, cbx_fp b1, cbx_fp b2, cbx_fp r)
+{
+    /*@ assert d: rnorm3(b0, b1, b2) >= 0 && rnorm3(b0, b1, b2) * rnorm3(b0, b1, b2) == nrm3(b0, b1, b2); */
+    /*@ assert q: nrm3(b0, b1, b2) * ((1 + 10*CBX_U) * (1 + 10*CBX_U)) + CBX_SQE * CBX_SQE
+                  <= ((1 + 10*CBX_U) * rnorm3(b0, b1, b2) + CBX_SQE)
+                     * ((1 + 10*CBX_U) * rnorm3(b0, b1, b2) + CBX_SQE); */
+    /*@ assert p: (1 + 10*CBX_U) * rnorm3(b0, b1, b2) + CBX_SQE >= 0; */
+    /*@ assert s: sq_le(r, (1 + 10*CBX_U) * rnorm3(b0, b1, b2) + CBX_SQE); */
+    (void)b0; (void)b1; (void)b2; (void)r;
+}
+
+/* A row with an entry of magnitude at least 2^-300 (binary32: 2^-30) has
+ * a norm at least that. */
+/*@ requires big: CBX_STINY <= \abs(b0) || CBX_STINY <= \abs(b1) || CBX_STINY <= \abs(b2);
+    assigns \nothing;
+    ensures ge: CBX_STINY <= rnorm3(b0, b1, b2);
+*/
+static void rn_ge(cbx_fp b0, cbx_fp b1, cbx_fp b2)
+{
+    /*@ assert d: rnorm3(b0, b1, b2) >= 0 && rnorm3(b0, b1, b2) * rnorm3(b0, b1, b2) == nrm3(b0, b1, b2); */
+    /*@ assert z: nrm3(0, b1, b2) >= 0 && nrm3(b0, 0, b2) >= 0 && nrm3(b0, b1, 0) >= 0; */
+    /*@ assert s0: CBX_STINY <= \abs(b0) ==> sq_le(CBX_STINY, b0); */
+    /*@ assert s1: CBX_STINY <= \abs(b1) ==> sq_le(CBX_STINY, b1); */
+    /*@ assert s2: CBX_STINY <= \abs(b2) ==> sq_le(CBX_STINY, b2); */
+    /*@ assert n0: sq_le(CBX_STINY, b0) ==> CBX_STINY * CBX_STINY <= nrm3(b0, b1, b2); */
+    /*@ assert n1: sq_le(CBX_STINY, b1) ==> CBX_STINY * CBX_STINY <= nrm3(b0, b1, b2); */
+    /*@ assert n2: sq_le(CBX_STINY, b2) ==> CBX_STINY * CBX_STINY <= nrm3(b0, b1, b2); */
+    /*@ assert s: sq_le(CBX_STINY, rnorm3(b0, b1, b2)); */
+    (void)b0; (void)b1; (void)b2;
+}
+
+/* The expansion of sum ((1 + 8u) |a_j| + e)^2 (a_j = r_j d_j). */
+/*@ assigns \nothing;
+    ensures id: nrm3((1 + 8*CBX_U) * \abs(r0*d0) + CBX_ETA64, (1 + 8*CBX_U) * \abs(r1*d1) + CBX_ETA64, (1 + 8*CBX_U) * \abs(r2*d2) + CBX_ETA64)
+                   == ((1 + 8*CBX_U) * (1 + 8*CBX_U)) * nrm3(\abs(r0*d0), \abs(r1*d1), \abs(r2*d2))
+                      + (2 * (1 + 8*CBX_U) * CBX_ETA64) * (\abs(r0*d0) + \abs(r1*d1) + \abs(r2*d2))
+                      + 3 * CBX_ETA64 * CBX_ETA64;
+*/
+static void rn_shift(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_fp d2)
+{
+    (void)r0; (void)r1; (void)r2; (void)d0; (void)d1; (void)d2;
+}
+
+/* Entries each at most (1 + 8u) |a_j| + 2^-1068 (binary32: 2^-143), as
+ * abs_prod_up returns them (a_j = r_j d_j exactly), have a norm at most
+ * (1 + 8u) |a| + 2^-1067: s.s <= sum ((1 + 8u) |a_j| + e)^2 =
+ * (1 + 8u)^2 |a|^2 + 2 (1 + 8u) e sum |a_j| + 3 e^2, and sum |a_j| <= 2 |a|. */
+/*@ requires s: 0 <= s0 <= (1 + 8*CBX_U) * \abs(r0*d0) + CBX_ETA64
+                && 0 <= s1 <= (1 + 8*CBX_U) * \abs(r1*d1) + CBX_ETA64
+                && 0 <= s2 <= (1 + 8*CBX_U) * \abs(r2*d2) + CBX_ETA64;
+    assigns \nothing;
+    ensures up: rnorm3(s0, s1, s2) <= (1 + 8*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + CBX_ETA128;
+*/
+static void rn_pert(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_fp d2,
+                    cbx_fp s0, cbx_fp s1, cbx_fp s2)
+{
+    /*@ assert sum4: (\abs(r0*d0) + \abs(r1*d1) + \abs(r2*d2)) * (\abs(r0*d0) + \abs(r1*d1) + \abs(r2*d2))
+                     <= 4 * nrm3(\abs(r0*d0), \abs(r1*d1), \abs(r2*d2)); */
+    /*@ assert x: nrm3(\abs(r0*d0), \abs(r1*d1), \abs(r2*d2)) == nrm3(r0*d0, r1*d1, r2*d2); */
+    /*@ assert da: rnorm3(r0*d0, r1*d1, r2*d2) >= 0
+                   && rnorm3(r0*d0, r1*d1, r2*d2) * rnorm3(r0*d0, r1*d1, r2*d2) == nrm3(r0*d0, r1*d1, r2*d2); */
+    /*@ assert sum2: sq_le(\abs(r0*d0) + \abs(r1*d1) + \abs(r2*d2), 2 * rnorm3(r0*d0, r1*d1, r2*d2)); */
+    /*@ assert ds: rnorm3(s0, s1, s2) >= 0 && rnorm3(s0, s1, s2) * rnorm3(s0, s1, s2) == nrm3(s0, s1, s2); */
+    /*@ assert q: sq_le(s0, (1 + 8*CBX_U) * \abs(r0*d0) + CBX_ETA64) && sq_le(s1, (1 + 8*CBX_U) * \abs(r1*d1) + CBX_ETA64)
+                  && sq_le(s2, (1 + 8*CBX_U) * \abs(r2*d2) + CBX_ETA64); */
+    /*@ assert n: nrm3(s0, s1, s2) <= nrm3((1 + 8*CBX_U) * \abs(r0*d0) + CBX_ETA64, (1 + 8*CBX_U) * \abs(r1*d1) + CBX_ETA64,
+                                           (1 + 8*CBX_U) * \abs(r2*d2) + CBX_ETA64); */
+    rn_shift(r0, r1, r2, d0, d1, d2);
+    /*@ assert m: nrm3(s0, s1, s2) <= ((1 + 8*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + 2 * CBX_ETA64)
+                                      * ((1 + 8*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + 2 * CBX_ETA64); */
+    /*@ assert r: sq_le(rnorm3(s0, s1, s2), (1 + 8*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + 2 * CBX_ETA64); */
+    (void)r0; (void)r1; (void)r2; (void)d0; (void)d1; (void)d2; (void)s0; (void)s1; (void)s2;
+}
+
+/* Scaling a row by 2^600 (binary32: 2^90) scales its norm by 2^600. */
+/*@ assigns \nothing;
+    ensures sc: rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) == CBX_SUP * rnorm3(b0, b1, b2);
+*/
+static void rn_scale(cbx_fp b0, cbx_fp b1, cbx_fp b2)
+{
+    /*@ assert n: nrm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) == nrm3(b0, b1, b2) * (CBX_SUP*CBX_SUP); */
+    /*@ assert d: rnorm3(b0, b1, b2) >= 0 && rnorm3(b0, b1, b2) * rnorm3(b0, b1, b2) == nrm3(b0, b1, b2); */
+    /*@ assert e: rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) >= 0
+                  && rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) * rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP)
+                     == nrm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP); */
+    /*@ assert f: sq_le(rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP), CBX_SUP * rnorm3(b0, b1, b2))
+                  && sq_le(CBX_SUP * rnorm3(b0, b1, b2), rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP)); */
+    (void)b0; (void)b1; (void)b2;
+}
+
 /* An upper bound r of the norm of (b0, b1, b2): b . b <= r^2. */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
     requires rng: cls(b0, b0, CBX_SB, CBX_SB) && cls(b1, b1, CBX_SB, CBX_SB)
@@ -25,6 +127,7 @@
     assigns \nothing;
     ensures fin: \is_finite(\result) && 0 <= \result <= CBX_SR2;
     ensures bound: sq_bound(b0, b1, b2, \result);
+    ensures tight: \result <= (1 + 22*CBX_U) * rnorm3(b0, b1, b2) + CBX_SA;
 */
 static cbx_fp ball_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
 {
@@ -46,6 +149,10 @@ static cbx_fp ball_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
     cbx_fp f = cbx_add_rn(s2, e);
     cbx_fp su = cbx_add_rn(f, CBX_K(ETA16));
     /*@ assert su: su >= nrm3(b0, b1, b2) && su <= CBX_R21; */
+    /*@ assert qu: q0 <= b0*b0 * (1 + CBX_U) + CBX_ETA && q1 <= b1*b1 * (1 + CBX_U) + CBX_ETA
+                   && q2 <= b2*b2 * (1 + CBX_U) + CBX_ETA; */
+    /*@ assert s2u: s2 <= nrm3(b0, b1, b2) * (1 + CBX_U4) + CBX_ETA8; */
+    /*@ assert suu: su <= nrm3(b0, b1, b2) * (1 + 16*CBX_U) + CBX_ETA64; */
     cbx_fp r = cbx_sqrt_rn(su);
     /*@ assert rb: sq_le(r, CBX_SR1); */
     /*@ assert rb2: r <= CBX_SR1; */
@@ -54,6 +161,10 @@ static cbx_fp ball_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
     /*@ assert ru1: ru >= r * (1 + CBX_U2); */
     /*@ assert ru2: sq_le(r * (1 + CBX_U2), ru); */
     /*@ assert ru3: ru * ru >= su; */
+    /*@ assert rr: r * r <= nrm3(b0, b1, b2) * ((1 + 10*CBX_U) * (1 + 10*CBX_U)) + CBX_SQE * CBX_SQE; */
+    rn_up(b0, b1, b2, r);
+    /*@ assert ruu: ru <= r * (1 + 11*CBX_U) + CBX_ETA64; */
+    /*@ assert rn: rnorm3(b0, b1, b2) >= 0; */
     return ru;
 }
 
@@ -64,11 +175,14 @@ static cbx_fp ball_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures up: \abs(r*d) <= \result <= CBX_SB;
+    ensures tight: \result <= (1 + 8*CBX_U) * \abs(r*d) + CBX_ETA64;
 */
 static cbx_fp abs_prod_up(cbx_fp r, cbx_fp d)
 {
     cbx_fp e = cbx_abs(cbx_mul_rn(r, d));
+    /*@ assert eu: e <= \abs(r*d) * (1 + CBX_U) + CBX_ETA; */
     cbx_fp f = cbx_add_rn(e, cbx_mul_rn(e, CBX_K(U4)));
+    /*@ assert fu: f <= e * (1 + 6*CBX_U) + CBX_ETA4; */
     return cbx_add_rn(f, CBX_K(ETA16));
 }
 
@@ -91,11 +205,16 @@ static void nrm3_up(cbx_fp b0, cbx_fp b1, cbx_fp b2)
     assigns \nothing;
     ensures fin: \is_finite(\result) && 0 <= \result <= CBX_SR2;
     ensures bound: sq_bound(b0, b1, b2, \result);
+    ensures tight: \result <= (1 + 40*CBX_U) * rnorm3(b0, b1, b2) + CBX_ETA128;
 */
 static cbx_fp row_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
 {
-    if (!cbx_cls(b0, b1, CBX_K(STINY), CBX_K(STINY)) || !cbx_cls(b2, b2, CBX_K(STINY), CBX_K(STINY)))
-        return ball_radius(b0, b1, b2);
+    if (!cbx_cls(b0, b1, CBX_K(STINY), CBX_K(STINY)) || !cbx_cls(b2, b2, CBX_K(STINY), CBX_K(STINY))) {
+        cbx_fp rb = ball_radius(b0, b1, b2);
+        /*@ assert big: CBX_STINY <= \abs(b0) || CBX_STINY <= \abs(b1) || CBX_STINY <= \abs(b2); */
+        rn_ge(b0, b1, b2);
+        return rb;
+    }
     cbx_fp s0 = abs_prod_up(b0, CBX_K(SUP));
     cbx_fp s1 = abs_prod_up(b1, CBX_K(SUP));
     cbx_fp s2 = abs_prod_up(b2, CBX_K(SUP));
@@ -109,6 +228,16 @@ static cbx_fp row_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
     /*@ assert sb: sq_bound(b0, b1, b2, rs*CBX_SDN); */
     cbx_fp r = abs_prod_up(rs, CBX_K(SDN));
     /*@ assert rr: rs*CBX_SDN <= r; */
+    /*@ assert su: s0 <= (1 + 8*CBX_U) * \abs(b0*CBX_SUP) + CBX_ETA64
+                   && s1 <= (1 + 8*CBX_U) * \abs(b1*CBX_SUP) + CBX_ETA64
+                   && s2 <= (1 + 8*CBX_U) * \abs(b2*CBX_SUP) + CBX_ETA64
+                   && 0 <= s0 && 0 <= s1 && 0 <= s2; */
+    rn_pert(b0, b1, b2, CBX_K(SUP), CBX_K(SUP), CBX_K(SUP), s0, s1, s2);
+    rn_scale(b0, b1, b2);
+    /*@ assert rsn: rnorm3(s0, s1, s2) <= (1 + 8*CBX_U) * CBX_SUP * rnorm3(b0, b1, b2) + CBX_ETA128; */
+    /*@ assert rn: rnorm3(b0, b1, b2) >= 0 && rs >= 0; */
+    /*@ assert rsu: rs <= (1 + 22*CBX_U) * ((1 + 8*CBX_U) * CBX_SUP * rnorm3(b0, b1, b2) + CBX_ETA128) + CBX_SA; */
+    /*@ assert ru: r <= (1 + 8*CBX_U) * (rs * CBX_SDN) + CBX_ETA64; */
     return r;
 }
 
@@ -120,12 +249,17 @@ static cbx_fp row_radius(cbx_fp b0, cbx_fp b1, cbx_fp b2)
     assigns \nothing;
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
     ensures ball: ball_cover(\result.a, \result.b, b0, b1, b2, t);
+    ensures tight: ball_tight(\result.a, \result.b, b0, b1, b2, t);
 */
 static conv_res ball_axis_bounds(cbx_fp b0, cbx_fp b1, cbx_fp b2, cbx_fp t)
 {
     cbx_fp r = row_radius(b0, b1, b2);
     conv_res lh = cbx_c2b(t, r);
     /*@ assert lh: lh.a <= t - r && t + r <= lh.b; */
+    /*@ assert rn: rnorm3(b0, b1, b2) >= 0 && r >= 0; */
+    /*@ assert g: conv_gap(t, r) <= CBX_U16 * \abs(t) + CBX_U16 * ((1 + 40*CBX_U) * rnorm3(b0, b1, b2) + CBX_ETA128) + CBX_ETA256; */
+    /*@ assert ta: (t - rnorm3(b0, b1, b2)) - ball_gap(t, rnorm3(b0, b1, b2)) <= lh.a; */
+    /*@ assert tb: lh.b <= (t + rnorm3(b0, b1, b2)) + ball_gap(t, rnorm3(b0, b1, b2)); */
     return lh;
 }
 
@@ -207,6 +341,7 @@ cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
     assigns \nothing;
     ensures fin: \is_finite(\result.a) && \is_finite(\result.b);
     ensures ball: ball_cover(\result.a, \result.b, r0*d0, r1*d1, r2*d2, c);
+    ensures tight: ball_tight(\result.a, \result.b, r0*d0, r1*d1, r2*d2, c);
 */
 static conv_res ell_axis_bounds(cbx_fp r0, cbx_fp r1, cbx_fp r2,
                                 cbx_fp d0, cbx_fp d1, cbx_fp d2, cbx_fp c)
@@ -219,6 +354,13 @@ static conv_res ell_axis_bounds(cbx_fp r0, cbx_fp r1, cbx_fp r2,
     /*@ assert sb: sq_bound(r0*d0, r1*d1, r2*d2, r); */
     conv_res lh = cbx_c2b(c, r);
     /*@ assert lh: lh.a <= c - r && c + r <= lh.b; */
+    rn_pert(r0, r1, r2, d0, d1, d2, b0, b1, b2);
+    /*@ assert rn: rnorm3(r0*d0, r1*d1, r2*d2) >= 0 && r >= 0; */
+    /*@ assert rb: rnorm3(b0, b1, b2) <= (1 + 8*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + CBX_ETA128; */
+    /*@ assert ru: r <= (1 + 49*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + CBX_ETA256 + 48*CBX_U*CBX_ETA128; */
+    /*@ assert g: conv_gap(c, r) <= CBX_U16 * \abs(c) + CBX_U16 * ((1 + 49*CBX_U) * rnorm3(r0*d0, r1*d1, r2*d2) + CBX_ETA512) + CBX_ETA256; */
+    /*@ assert ta: (c - rnorm3(r0*d0, r1*d1, r2*d2)) - ball_gap(c, rnorm3(r0*d0, r1*d1, r2*d2)) <= lh.a; */
+    /*@ assert tb: lh.b <= (c + rnorm3(r0*d0, r1*d1, r2*d2)) + ball_gap(c, rnorm3(r0*d0, r1*d1, r2*d2)); */
     return lh;
 }
 
@@ -260,7 +402,8 @@ typedef struct ell_res { cbx_fp lo, hi; int ok; } ell_res;
       && \is_finite(d0) && \is_finite(d1) && \is_finite(d2) && \is_finite(c)
       && ell_dom(r0, r1, r2, d0, d1, d2, c));
     ensures in: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
-      && ball_axis(\result.lo, \result.hi, r0*d0, r1*d1, r2*d2, c);
+      && ball_axis(\result.lo, \result.hi, r0*d0, r1*d1, r2*d2, c)
+      && ball_tight(\result.lo, \result.hi, r0*d0, r1*d1, r2*d2, c);
     ensures out: \result.ok == 0 ==>
       \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
 */

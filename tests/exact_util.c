@@ -1051,6 +1051,33 @@ int xu_sqrt_hi_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
     return xu_sqrt_side_ok(x, s, sh, hi, t);
 }
 
+/* X = |end - t| - K u |t| - E (times 2^sh); X <= (1 + K u) sqrt(s') iff
+ * X <= 0 or X^2 2^(2 uexp) <= (2^uexp + K)^2 s (s' = s 2^-2sh). */
+int xu_sqrt_gap_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t, double end,
+                   unsigned long k, unsigned long uexp, unsigned long eexp)
+{
+    xu_scaled_sh(x->d, end, sh);
+    xu_scaled_sh(x->t, t, sh);
+    mpz_sub(x->d, x->d, x->t);
+    mpz_abs(x->d, x->d);                       /* |end - t| 2^sh        */
+    mpz_abs(x->t, x->t);
+    mpz_mul_ui(x->t, x->t, k);
+    mpz_fdiv_q_2exp(x->e, x->t, uexp);         /* exact: sh >= uexp + 1074 */
+    mpz_sub(x->d, x->d, x->e);                 /* - K u |t| 2^sh        */
+    mpz_set_ui(x->e, 1);
+    mpz_mul_2exp(x->e, x->e, sh - eexp);
+    mpz_sub(x->d, x->d, x->e);                 /* - 2^-eexp 2^sh        */
+    if (mpz_sgn(x->d) <= 0) return 1;
+    mpz_mul(x->d, x->d, x->d);
+    mpz_mul_2exp(x->d, x->d, 2 * uexp);        /* X^2 2^(2 uexp)        */
+    mpz_set_ui(x->e, 1);
+    mpz_mul_2exp(x->e, x->e, uexp);
+    mpz_add_ui(x->e, x->e, k);
+    mpz_mul(x->e, x->e, x->e);
+    mpz_mul(x->e, x->e, s);                    /* (2^uexp + K)^2 s      */
+    return mpz_cmp(x->d, x->e) <= 0;
+}
+
 uint64_t xu_rng_next(xu_rng *r)
 {
     uint64_t z = (r->s += UINT64_C(0x9E3779B97F4A7C15));

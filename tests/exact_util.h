@@ -355,6 +355,12 @@ int xu_sqrt_lo_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
                   double lo);
 int xu_sqrt_hi_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t,
                   double hi);
+/* The proven tightness of a ball's end (specs/cbx_spec.h, ball_tight):
+ * |end - t| <= sqrt(s') + K 2^-uexp (|t| + sqrt(s')) + 2^-eexp, exactly
+ * (s' = s / 2^(2 sh) as above; exact when t 2^(sh - uexp) is an integer,
+ * as for a float t and sh >= 1074, and sh >= eexp).  Uses x->d, x->t, x->e. */
+int xu_sqrt_gap_ok(xu_exact *x, const mpz_t s, unsigned long sh, double t, double end,
+                   unsigned long k, unsigned long uexp, unsigned long eexp);
 /* z = v * 2^sh exactly (sh >= 1074, v finite). */
 void xu_scaled_sh(mpz_t z, double v, unsigned long sh);
 

@@ -40,7 +40,8 @@
  *     exact containment of the input's real box.
  *  5. cbx_sphere_boxf, cbx_ellipsoid_boxf: N/2 cases each: status, kinds,
  *     exact containment of t -+ sqrt(sum m_ij^2) (equivalent to containing
- *     every point of the ball), the ellipsoid's rows as exact products.
+ *     every point of the ball), the ellipsoid's rows as exact products, and
+ *     the proven tightness 80 u (|t| + sqrt s) + 2^-139 of each end, exactly.
  *  6. A special-value table: every function x every input position x 32
  *     binary32 values (NaN, +-inf, +-0, subnormals, FLT_MAX, the domain
  *     limits 2^30, 2^61, 2^122, 2^123 and the next float beyond each) on an
@@ -777,14 +778,20 @@ static fstat st_sph = { "cbx_sphere_boxf", 0, 0, 0, 0, 0, 0 };
 static fstat st_ell = { "cbx_ellipsoid_boxf", 0, 0, 0, 0, 0, 0 };
 
 /* One axis of a ball bound: lo <= t - sqrt(s') and hi >= t + sqrt(s'),
- * s' = s / 2^(2 sh), exactly; the excess of each end over the exact end,
- * in units of u (|t| + sqrt s') + eta (statistics). */
+ * s' = s / 2^(2 sh), exactly (else 0), and each end within the proven
+ * 80 u (|t| + sqrt s') + 2^-139 of the exact end, exactly (else -1); the
+ * excess of each end over the exact end, in units of u (|t| + sqrt s') +
+ * eta (statistics). */
 static int ball_axis_ok(xu_exact *x, fstat *fs, const mpz_t s, unsigned long sh, double t,
                         double lo, double hi)
 {
     double r, sc, m;
     long e;
     if (!xu_sqrt_lo_ok(x, s, sh, t, lo) || !xu_sqrt_hi_ok(x, s, sh, t, hi)) return 0;
+    /* the proven tightness (ball_tight, binary32): 80 u (|t| + sqrt s') + 2^-139 */
+    fs->checks += 2;
+    if (!xu_sqrt_gap_ok(x, s, sh, t, lo, 80, 24, 139) || !xu_sqrt_gap_ok(x, s, sh, t, hi, 80, 24, 139))
+        return -1;
     m = mpz_get_d_2exp(&e, s); /* s = m 2^e, m in [0.5, 1): statistics only */
     r = mpz_sgn(s) ? ldexp(sqrt(m * ((e & 1) ? 2.0 : 1.0)), (int)((e - (e & 1)) / 2 - (long)sh)) : 0.0;
     sc = 0x1p-24 * (fabs(t) + r) + 0x1p-149;
@@ -845,9 +852,11 @@ static void run_sphere(xu_exact *x, const cbx_affine *ad, const char *what)
             mpz_addmul(S, z, z);
         }
         st_sph.checks += 2;
-        if (!ball_axis_ok(x, &st_sph, S, 1074, ad->m[i][3], od.lo[i], od.hi[i])) {
+        int k = ball_axis_ok(x, &st_sph, S, 1074, ad->m[i][3], od.lo[i], od.hi[i]);
+        if (k <= 0) {
             bad = 1;
-            fs_fail(&st_sph, what, "an end inside the exact image of the ball");
+            fs_fail(&st_sph, what, k < 0 ? "an end beyond the proven tightness bound"
+                                         : "an end inside the exact image of the ball");
         }
     }
     mpz_clears(S, z, NULL);
@@ -892,9 +901,11 @@ static void run_ellipsoid(xu_exact *x, const double cen[3], const double rad[3],
             mpz_addmul(S, z, z);
         }
         st_ell.checks += 2;
-        if (!ball_axis_ok(x, &st_ell, S, 2148, cen[i], od.lo[i], od.hi[i])) {
+        int k = ball_axis_ok(x, &st_ell, S, 2148, cen[i], od.lo[i], od.hi[i]);
+        if (k <= 0) {
             bad = 1;
-            fs_fail(&st_ell, what, "an end inside the exact image of the ellipsoid");
+            fs_fail(&st_ell, what, k < 0 ? "an end beyond the proven tightness bound"
+                                         : "an end inside the exact image of the ellipsoid");
         }
     }
     mpz_clears(S, z, w, NULL);

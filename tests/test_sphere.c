@@ -25,6 +25,9 @@
  *     (check "sanity<=64") fails an end more than 64 units out on axes with
  *     u*(|t| + sqrt(s)) >= 2^-1000; on the other axes (check "tiny-abs")
  *     an end fails when its gap is above both 64 units and 2^-1000;
+ *   - the proven tightness (check "proven-bound", the contract's ball_tight):
+ *     every in-domain end within 80 u (|t| + sqrt(s)) + 2^-1064 of the exact
+ *     end, on every axis;
  *   - points: for up to 8 points p with p.p <= 1 (checked exactly; points
  *     that fail are nudged toward 0 or skipped), 6 of them the double
  *     nearest to the maximising directions -+ M_i/|M_i|, the exact image
@@ -67,14 +70,15 @@ enum {
     F_STATUS, F_UNSET, F_SPECIAL, F_OOB, F_FINITE, F_CONTAIN,
     F_SANITY,   /* > 64 units where u*(|t|+sqrt s) >= 2^-1000              */
     F_TINYABS,  /* gap > 2^-1000 where u*(|t|+sqrt s) < 2^-1000            */
+    F_PROVEN,   /* gap > 80 u (|t|+sqrt s) + 2^-1064: the proven bound     */
     F_POINT, F_INPUT, NF
 };
 static const char *const f_name[NF] = {
     "status", "out-set", "special-out", "oob-axes", "finite", "containment",
-    "sanity<=64", "tiny-abs", "points", "inputs"
+    "sanity<=64", "tiny-abs", "proven-bound", "points", "inputs"
 };
 static const char *const f_unit[NF] = {
-    "cases", "cases", "cases", "axes", "axes", "axes", "axes", "axes",
+    "cases", "cases", "cases", "axes", "axes", "axes", "axes", "axes", "axes",
     "pt-axes", "cases"
 };
 
@@ -240,6 +244,7 @@ static double sqrt_rn(ctx *k, const mpz_t s, unsigned long sh)
 typedef struct rowres {
     double units_lo, units_hi, ulps_lo, ulps_hi;
     int tiny, big, exact_lo, exact_hi, cancel_lo, cancel_hi, raised, bad_lo, bad_hi;
+    int over_proven;        /* an end beyond the proven bound (ball_gap)  */
 } rowres;
 
 /* ulp of the exact end X (the spacing of binary64 at |X|) */
@@ -316,6 +321,19 @@ static void mp_row(ctx *k, const mpz_t s, unsigned long sh, double t,
                    || mpfr_get_exp(k->EL) < mpfr_get_exp(k->D) - 2;
     r->cancel_hi = mpfr_zero_p(k->EH)
                    || mpfr_get_exp(k->EH) < mpfr_get_exp(k->D) - 2;
+    /* the proven bound (specs/cbx_spec.h, ball_gap): 80 u scale + 2^-1064,
+     * rounded up */
+    mpfr_t P;
+    mpfr_init2(P, 128);
+    mpfr_mul_ui(P, k->D, 80, MPFR_RNDU);
+    mpfr_mul_2si(P, P, -53, MPFR_RNDU);
+    {
+        mpfr_t E;
+        mpfr_init2(E, 64);
+        mpfr_set_ui_2exp(E, 1, -1064, MPFR_RNDN);
+        mpfr_add(P, P, E, MPFR_RNDU);
+        mpfr_clear(E);
+    }
     /* D = u * scale + eta */
     mpfr_mul_2si(k->D, k->D, -53, MPFR_RNDN);
     mpfr_set_prec(k->G, 64);
@@ -326,6 +344,7 @@ static void mp_row(ctx *k, const mpz_t s, unsigned long sh, double t,
     /* lower end: exact_lo - lo */
     mpfr_sub_d(k->G, k->EL, lo, MPFR_RNDN);
     r->exact_lo = mpfr_zero_p(k->G);
+    r->over_proven = mpfr_cmp(k->G, P) > 0;
     r->bad_lo = mpfr_cmp_ui_2exp(k->G, 1, -1064) > 0;
     mpfr_mul_2si(k->G, k->G, -ulp_exp(k->EL), MPFR_RNDN);
     r->ulps_lo = mpfr_get_d(k->G, MPFR_RNDN);
@@ -337,6 +356,8 @@ static void mp_row(ctx *k, const mpz_t s, unsigned long sh, double t,
     mpfr_set_d(k->T, hi, MPFR_RNDN);
     mpfr_sub(k->G, k->T, k->EH, MPFR_RNDN);
     r->exact_hi = mpfr_zero_p(k->G);
+    r->over_proven |= mpfr_cmp(k->G, P) > 0;
+    mpfr_clear(P);
     r->bad_hi = mpfr_cmp_ui_2exp(k->G, 1, -1064) > 0;
     mpfr_mul_2si(k->G, k->G, -ulp_exp(k->EH), MPFR_RNDN);
     r->ulps_hi = mpfr_get_d(k->G, MPFR_RNDN);
@@ -645,6 +666,13 @@ static int run_problem(ctx *k, group *g, const problem *P, cbx_box *out,
                          "(units lo %.3g, hi %.3g)", i, rr.units_lo, rr.units_hi);
                 v_fail(v, F_TINYABS, why);
             }
+        }
+        /* the contract's tightness (ball_tight), on every in-domain axis */
+        v->applied[F_PROVEN]++;
+        if (rr.over_proven) {
+            snprintf(why, sizeof why, "axis %d: beyond the proven bound 80 u (|t| + sqrt s) + 2^-1064 "
+                     "(units lo %.3g, hi %.3g)", i, rr.units_lo, rr.units_hi);
+            v_fail(v, F_PROVEN, why);
         }
         g->axes++;
         g->prec_raised += rr.raised;
