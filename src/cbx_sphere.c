@@ -104,13 +104,23 @@ static void rn_pert(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_f
     (void)r0; (void)r1; (void)r2; (void)d0; (void)d1; (void)d2; (void)s0; (void)s1; (void)s2;
 }
 
+/* Lemma function: scaling a row by 2^k scales its squared norm by 2^2k
+ * (in row_radius's context the step timed out). */
+/*@ assigns \nothing;
+    ensures sc: nrm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) == nrm3(b0, b1, b2) * (CBX_SUP*CBX_SUP);
+*/
+static void nrm3_up(cbx_fp b0, cbx_fp b1, cbx_fp b2)
+{
+    (void)b0; (void)b1; (void)b2;
+}
+
 /* Scaling a row by 2^600 (binary32: 2^90) scales its norm by 2^600. */
 /*@ assigns \nothing;
     ensures sc: rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) == CBX_SUP * rnorm3(b0, b1, b2);
 */
 static void rn_scale(cbx_fp b0, cbx_fp b1, cbx_fp b2)
 {
-    /*@ assert n: nrm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) == nrm3(b0, b1, b2) * (CBX_SUP*CBX_SUP); */
+    nrm3_up(b0, b1, b2);
     /*@ assert d: rnorm3(b0, b1, b2) >= 0 && rnorm3(b0, b1, b2) * rnorm3(b0, b1, b2) == nrm3(b0, b1, b2); */
     /*@ assert e: rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) >= 0
                   && rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) * rnorm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP)
@@ -184,16 +194,6 @@ static cbx_fp abs_prod_up(cbx_fp r, cbx_fp d)
     cbx_fp f = cbx_add_rn(e, cbx_mul_rn(e, CBX_K(U4)));
     /*@ assert fu: f <= e * (1 + 6*CBX_U) + CBX_ETA4; */
     return cbx_add_rn(f, CBX_K(ETA16));
-}
-
-/* Lemma function: scaling a row by 2^k scales its squared norm by 2^2k
- * (in row_radius's context the step timed out). */
-/*@ assigns \nothing;
-    ensures sc: nrm3(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP) == nrm3(b0, b1, b2) * (CBX_SUP*CBX_SUP);
-*/
-static void nrm3_up(cbx_fp b0, cbx_fp b1, cbx_fp b2)
-{
-    (void)b0; (void)b1; (void)b2;
 }
 
 /* An upper bound r of the norm of (b0, b1, b2), accurate for every row: a
@@ -286,7 +286,9 @@ static void sph_whole(cbx_box *out, int i)
     out->hi[i] = cbx_pinf();
 }
 
-typedef struct sph_res { cbx_fp lo, hi; int ok; } sph_res;
+/* One axis of a ball's box (sphere or ellipsoid): its ends, and whether
+ * the row was in the domain. */
+typedef struct ball_res { cbx_fp lo, hi; int ok; } ball_res;
 
 /* One axis of the sphere: the kernel inside the domain, [-inf, +inf]
  * outside it (values in and out, as for the ellipsoid: the status's goal
@@ -300,9 +302,9 @@ typedef struct sph_res { cbx_fp lo, hi; int ok; } sph_res;
     ensures out: \result.ok == 0 ==>
       \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
 */
-static sph_res sphere_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
+static ball_res sphere_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
 {
-    sph_res e;
+    ball_res e;
     e.ok = sph_ok(m0, m1, m2, t);
     if (e.ok) {
         conv_res lh = ball_axis_bounds(m0, m1, m2, t);
@@ -341,9 +343,9 @@ cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
     cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
     cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
     cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
-    sph_res e0 = sphere_axis(a00, a01, a02, a03);
-    sph_res e1 = sphere_axis(a10, a11, a12, a13);
-    sph_res e2 = sphere_axis(a20, a21, a22, a23);
+    ball_res e0 = sphere_axis(a00, a01, a02, a03);
+    ball_res e1 = sphere_axis(a10, a11, a12, a13);
+    ball_res e2 = sphere_axis(a20, a21, a22, a23);
     out->lo[0] = e0.lo; out->hi[0] = e0.hi;
     out->lo[1] = e1.lo; out->hi[1] = e1.hi;
     out->lo[2] = e2.lo; out->hi[2] = e2.hi;
@@ -420,8 +422,6 @@ static int ell_any_nan(const cbx_fp *center, const cbx_fp *radii, const cbx_fp (
     return cbx_is_nan(rot[2][0]) || cbx_is_nan(rot[2][1]) || cbx_is_nan(rot[2][2]);
 }
 
-typedef struct ell_res { cbx_fp lo, hi; int ok; } ell_res;
-
 /* One axis of the ellipsoid: the kernel inside the domain, [-inf, +inf]
  * outside it. */
 /*@ assigns \nothing;
@@ -434,10 +434,10 @@ typedef struct ell_res { cbx_fp lo, hi; int ok; } ell_res;
     ensures out: \result.ok == 0 ==>
       \is_minus_infinity(\result.lo) && \is_plus_infinity(\result.hi);
 */
-static ell_res ellipsoid_axis(cbx_fp r0, cbx_fp r1, cbx_fp r2,
+static ball_res ellipsoid_axis(cbx_fp r0, cbx_fp r1, cbx_fp r2,
                               cbx_fp d0, cbx_fp d1, cbx_fp d2, cbx_fp c)
 {
-    ell_res e;
+    ball_res e;
     e.ok = ell_ok(r0, r1, r2, d0, d1, d2, c);
     if (e.ok) {
         conv_res lh = ell_axis_bounds(r0, r1, r2, d0, d1, d2, c);
@@ -465,9 +465,9 @@ cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
     cbx_fp r00 = rot[0][0], r01 = rot[0][1], r02 = rot[0][2];
     cbx_fp r10 = rot[1][0], r11 = rot[1][1], r12 = rot[1][2];
     cbx_fp r20 = rot[2][0], r21 = rot[2][1], r22 = rot[2][2];
-    ell_res e0 = ellipsoid_axis(r00, r01, r02, d0, d1, d2, c0);
-    ell_res e1 = ellipsoid_axis(r10, r11, r12, d0, d1, d2, c1);
-    ell_res e2 = ellipsoid_axis(r20, r21, r22, d0, d1, d2, c2);
+    ball_res e0 = ellipsoid_axis(r00, r01, r02, d0, d1, d2, c0);
+    ball_res e1 = ellipsoid_axis(r10, r11, r12, d0, d1, d2, c1);
+    ball_res e2 = ellipsoid_axis(r20, r21, r22, d0, d1, d2, c2);
     out->lo[0] = e0.lo; out->hi[0] = e0.hi;
     out->lo[1] = e1.lo; out->hi[1] = e1.hi;
     out->lo[2] = e2.lo; out->hi[2] = e2.hi;
