@@ -148,12 +148,18 @@
 /*@ // ---------------------------------------------------------------------
     // The same notions on the public structures.
     // ---------------------------------------------------------------------
-    predicate has_nan(cbx_affine *a, cbx_box *b) =
+    // A NaN entry of the map, of a box, of a centre/half-size box.
+    predicate aff_nan(cbx_affine *a) =
          \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
       || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
-      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3])
-      || \is_NaN(b->lo[0]) || \is_NaN(b->lo[1]) || \is_NaN(b->lo[2])
+      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
+    predicate box_nan(cbx_box *b) =
+      \is_NaN(b->lo[0]) || \is_NaN(b->lo[1]) || \is_NaN(b->lo[2])
       || \is_NaN(b->hi[0]) || \is_NaN(b->hi[1]) || \is_NaN(b->hi[2]);
+    predicate cbox_nan(cbx_cbox *b) =
+      \is_NaN(b->c[0]) || \is_NaN(b->c[1]) || \is_NaN(b->c[2])
+      || \is_NaN(b->h[0]) || \is_NaN(b->h[1]) || \is_NaN(b->h[2]);
+    predicate has_nan(cbx_affine *a, cbx_box *b) = aff_nan(a) || box_nan(b);
 
     // No real point on axis j: hi < lo (IEEE comparison), or lo = +inf,
     // or hi = -inf (the set { x real : +inf <= x } is empty).
@@ -330,18 +336,7 @@
       && dom_pair(m2, c2) && dom_pair(m2, h2) && -CBX_RT <= t <= CBX_RT;
 */
 
-/*@ predicate cbox_has_nan(cbx_affine *a, cbx_cbox *b) =
-         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
-      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
-      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3])
-      || \is_NaN(b->c[0]) || \is_NaN(b->c[1]) || \is_NaN(b->c[2])
-      || \is_NaN(b->h[0]) || \is_NaN(b->h[1]) || \is_NaN(b->h[2]);
-    predicate cbox_nan(cbx_cbox *b) =
-      \is_NaN(b->c[0]) || \is_NaN(b->c[1]) || \is_NaN(b->c[2])
-      || \is_NaN(b->h[0]) || \is_NaN(b->h[1]) || \is_NaN(b->h[2]);
-    predicate box_nan(cbx_box *b) =
-      \is_NaN(b->lo[0]) || \is_NaN(b->lo[1]) || \is_NaN(b->lo[2])
-      || \is_NaN(b->hi[0]) || \is_NaN(b->hi[1]) || \is_NaN(b->hi[2]);
+/*@ predicate cbox_has_nan(cbx_affine *a, cbx_cbox *b) = aff_nan(a) || cbox_nan(b);
     // h < 0 on some axis (IEEE comparison; -0 is not negative)
     predicate cbox_empty(cbx_cbox *b) =
       CBX_LT(b->h[0], (cbx_fp)0.0) || CBX_LT(b->h[1], (cbx_fp)0.0)
@@ -459,10 +454,6 @@
     predicate in_dom508(real x, real y) = -CBX_EP <= x*y <= CBX_EP;
     lemma cls_254: \forall real m, c; cls(m, c, CBX_EB, CBX_EB) ==> in_dom508(m, c);
 
-    predicate aff_nan(cbx_affine *a) =
-         \is_NaN(a->m[0][0]) || \is_NaN(a->m[0][1]) || \is_NaN(a->m[0][2]) || \is_NaN(a->m[0][3])
-      || \is_NaN(a->m[1][0]) || \is_NaN(a->m[1][1]) || \is_NaN(a->m[1][2]) || \is_NaN(a->m[1][3])
-      || \is_NaN(a->m[2][0]) || \is_NaN(a->m[2][1]) || \is_NaN(a->m[2][2]) || \is_NaN(a->m[2][3]);
 
     // Tightness of a ball's axis: each end within 80u (|t| + |b|) + 2^-1064
     // of the exact end t -+ |b| (binary32: 80u and 2^-139).

@@ -103,7 +103,7 @@ static cbox_axis_result cbox_transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx
         r.c = k.c;
         r.h = k.h;
         r.ok = 1;
-    } else if (cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)) {
+    } else if (cbx_fin4(m0, m1, m2, t)) {
         cbx_fp e0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : c0, g0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : h0;
         cbx_fp e1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : c1, g1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : h1;
         cbx_fp e2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : c2, g2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : h2;
@@ -125,17 +125,7 @@ static cbox_axis_result cbox_transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx
 */
 static int cbox_any_nan(const cbx_affine *a, const cbx_cbox *in)
 {
-    if (cbx_is_nan(a->m[0][0]) || cbx_is_nan(a->m[0][1]) || cbx_is_nan(a->m[0][2]) || cbx_is_nan(a->m[0][3]))
-        return 1;
-    if (cbx_is_nan(a->m[1][0]) || cbx_is_nan(a->m[1][1]) || cbx_is_nan(a->m[1][2]) || cbx_is_nan(a->m[1][3]))
-        return 1;
-    if (cbx_is_nan(a->m[2][0]) || cbx_is_nan(a->m[2][1]) || cbx_is_nan(a->m[2][2]) || cbx_is_nan(a->m[2][3]))
-        return 1;
-    if (cbx_is_nan(in->c[0]) || cbx_is_nan(in->c[1]) || cbx_is_nan(in->c[2]))
-        return 1;
-    if (cbx_is_nan(in->h[0]) || cbx_is_nan(in->h[1]) || cbx_is_nan(in->h[2]))
-        return 1;
-    return 0;
+    return aff_any_nan(a) | cbox_any_nan_in(in);
 }
 
 /*@ requires \valid_read(in);
@@ -144,8 +134,8 @@ static int cbox_any_nan(const cbx_affine *a, const cbx_cbox *in)
 */
 static int cbox_any_negative(const cbx_cbox *in)
 {
-    return cbx_is_inverted(CBX_C(0.0), in->h[0]) || cbx_is_inverted(CBX_C(0.0), in->h[1])
-           || cbx_is_inverted(CBX_C(0.0), in->h[2]);
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1])
+           | cbx_is_inverted(CBX_C(0.0), in->h[2]);
 }
 
 /*@ requires \valid(out);

@@ -284,25 +284,53 @@ static cbx_status kern_translate(const cbx_affine *a, const cbx_box *in, cbx_box
     return cbx_transform_box(a, in, out);
 }
 
+/* The class tests, one predicate of specs/cbx_class.h each (one call per
+ * test keeps cbx_classify's goals linear). */
+/*@ requires valid: \valid_read(a);
+    assigns \nothing;
+    ensures \result != 0 <==> aff_fin(a);
+*/
+static int aff_all_fin(const cbx_affine *a)
+{
+    return cbx_fin4(a->m[0][0], a->m[0][1], a->m[0][2], a->m[0][3])
+           && cbx_fin4(a->m[1][0], a->m[1][1], a->m[1][2], a->m[1][3])
+           && cbx_fin4(a->m[2][0], a->m[2][1], a->m[2][2], a->m[2][3]);
+}
+
+/*@ requires valid: \valid_read(a);
+    assigns \nothing;
+    ensures \result != 0 <==> (a->m[0][1] == 0 && a->m[0][2] == 0 && a->m[1][0] == 0
+                               && a->m[1][2] == 0 && a->m[2][0] == 0 && a->m[2][1] == 0);
+*/
+static int off_diag_zero(const cbx_affine *a)
+{
+    return a->m[0][1] == 0.0 && a->m[0][2] == 0.0 && a->m[1][0] == 0.0
+           && a->m[1][2] == 0.0 && a->m[2][0] == 0.0 && a->m[2][1] == 0.0;
+}
+
+/*@ requires valid: \valid_read(a);
+    requires i: 0 <= i <= 2;
+    assigns \nothing;
+    ensures \result != 0 <==> row_sparse(a, i);
+*/
+static int row_has_one(const cbx_affine *a, int i)
+{
+    double x = a->m[i][0], y = a->m[i][1], z = a->m[i][2];
+    return (y == 0.0 && z == 0.0) || (x == 0.0 && z == 0.0) || (x == 0.0 && y == 0.0);
+}
+
 cbx_class cbx_classify(const cbx_affine *a)
 {
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
-    if (!(cbx_is_fin(a00) && cbx_is_fin(a01) && cbx_is_fin(a02) && cbx_is_fin(a03)
-          && cbx_is_fin(a10) && cbx_is_fin(a11) && cbx_is_fin(a12) && cbx_is_fin(a13)
-          && cbx_is_fin(a20) && cbx_is_fin(a21) && cbx_is_fin(a22) && cbx_is_fin(a23)))
+    if (!aff_all_fin(a))
         return CBX_CLASS_GENERAL;
-    if (a01 == 0.0 && a02 == 0.0 && a10 == 0.0 && a12 == 0.0 && a20 == 0.0 && a21 == 0.0) {
-        if (!(a00 == 1.0 && a11 == 1.0 && a22 == 1.0))
+    if (off_diag_zero(a)) {
+        if (!(a->m[0][0] == 1.0 && a->m[1][1] == 1.0 && a->m[2][2] == 1.0))
             return CBX_CLASS_SCALE;
-        if (a03 == 0.0 && a13 == 0.0 && a23 == 0.0)
+        if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0)
             return CBX_CLASS_IDENTITY;
         return CBX_CLASS_TRANSLATE;
     }
-    if (((a01 == 0.0 && a02 == 0.0) || (a00 == 0.0 && a02 == 0.0) || (a00 == 0.0 && a01 == 0.0))
-        && ((a11 == 0.0 && a12 == 0.0) || (a10 == 0.0 && a12 == 0.0) || (a10 == 0.0 && a11 == 0.0))
-        && ((a21 == 0.0 && a22 == 0.0) || (a20 == 0.0 && a22 == 0.0) || (a20 == 0.0 && a21 == 0.0)))
+    if (row_has_one(a, 0) && row_has_one(a, 1) && row_has_one(a, 2))
         return CBX_CLASS_PERMUTE;
     return CBX_CLASS_GENERAL;
 }

@@ -12,7 +12,6 @@
 #include "cbx_domain.h"
 #include "cbx_endpoints.h"
 
-
 /* One axis, box -> cbox: returns (c, h). */
 /*@ requires fin: \is_finite(lo) && \is_finite(hi);
     requires dom: conv_dom(lo, hi);
@@ -72,15 +71,6 @@ static void cwhole_set(cbx_cbox *out, int i)
 /* The input checks, each one predicate of the contract (one call in the
  * public functions keeps their goals small; box_any_nan, box_any_empty:
  * src/cbx_domain.h). */
-/*@ requires \valid_read(in);
-    assigns \nothing;
-    ensures \result != 0 <==> cbox_nan(in);
-*/
-static int cbox_any_nan_in(const cbx_cbox *in)
-{
-    return cbx_is_nan(in->c[0]) || cbx_is_nan(in->c[1]) || cbx_is_nan(in->c[2])
-           || cbx_is_nan(in->h[0]) || cbx_is_nan(in->h[1]) || cbx_is_nan(in->h[2]);
-}
 
 /*@ requires \valid_read(in);
     assigns \nothing;
@@ -88,8 +78,8 @@ static int cbox_any_nan_in(const cbx_cbox *in)
 */
 static int cbox_any_neg(const cbx_cbox *in)
 {
-    return cbx_is_inverted(CBX_C(0.0), in->h[0]) || cbx_is_inverted(CBX_C(0.0), in->h[1])
-           || cbx_is_inverted(CBX_C(0.0), in->h[2]);
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1])
+           | cbx_is_inverted(CBX_C(0.0), in->h[2]);
 }
 
 /* One axis of cbx_box_to_cbox: the conversion in the domain, the whole

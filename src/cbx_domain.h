@@ -21,18 +21,16 @@ static inline int cbx_cls(cbx_fp m, cbx_fp c, cbx_fp bm, cbx_fp bc)
 }
 
 /* Run-time check of one product's domain class (specs: dom_pair), the
- * classes of src/cbx_prec_begin.h in order.  The common class (both
- * factors at most 2^509; 2^61 in binary32) comes first. */
-#define CBX_CLS_TRY(tag, bm, bc) if (cbx_cls(m, c, CBX_C(bm), CBX_C(bc))) return 1;
+ * classes of src/cbx_prec_begin.h or-ed without a branch (one smoke test
+ * and one path per class in the proof, not two). */
+#define CBX_CLS_TRY(tag, bm, bc) | cbx_cls(m, c, CBX_C(bm), CBX_C(bc))
 /*@ requires fin: \is_finite(m) && \is_finite(c);
     assigns \nothing;
     ensures val: \result != 0 <==> dom_pair(m, c);
 */
 static inline int cbx_dom_pair(cbx_fp m, cbx_fp c)
 {
-    CBX_CLASS_HEAD(CBX_CLS_TRY)
-    CBX_CLASS_TAIL(CBX_CLS_TRY)
-    return 0;
+    return 0 CBX_CLASS_HEAD(CBX_CLS_TRY) CBX_CLASS_TAIL(CBX_CLS_TRY);
 }
 
 /* 1 if x is finite: comparisons with NaN and infinities are false. */
@@ -40,6 +38,15 @@ static inline int cbx_dom_pair(cbx_fp m, cbx_fp c)
     ensures \result != 0 <==> \is_finite(x);
 */
 static inline int cbx_is_fin(cbx_fp x) { return x >= -CBX_K(FMAX) && x <= CBX_K(FMAX); }
+
+/* 1 if the four are finite (one call: the callers' goals stay linear). */
+/*@ assigns \nothing;
+    ensures \result != 0 <==> (\is_finite(x0) && \is_finite(x1) && \is_finite(x2) && \is_finite(x3));
+*/
+static inline int cbx_fin4(cbx_fp x0, cbx_fp x1, cbx_fp x2, cbx_fp x3)
+{
+    return cbx_is_fin(x0) && cbx_is_fin(x1) && cbx_is_fin(x2) && cbx_is_fin(x3);
+}
 
 /* 1 when every input of one output row is finite and in the proven domain
  * (specs: row_in_dom).  One early return per test keeps the proof linear. */
@@ -96,14 +103,35 @@ static inline int cbx_no_point(cbx_fp lo, cbx_fp hi)
 
 /* The input checks of a box, each one predicate of the contracts (one call
  * in the public functions keeps their goals small). */
+/*@ requires \valid_read(a);
+    assigns \nothing;
+    ensures \result != 0 <==> aff_nan(a);
+*/
+static inline int aff_any_nan(const cbx_affine *a)
+{
+    return cbx_is_nan(a->m[0][0]) | cbx_is_nan(a->m[0][1]) | cbx_is_nan(a->m[0][2]) | cbx_is_nan(a->m[0][3])
+           | cbx_is_nan(a->m[1][0]) | cbx_is_nan(a->m[1][1]) | cbx_is_nan(a->m[1][2]) | cbx_is_nan(a->m[1][3])
+           | cbx_is_nan(a->m[2][0]) | cbx_is_nan(a->m[2][1]) | cbx_is_nan(a->m[2][2]) | cbx_is_nan(a->m[2][3]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox_nan(in);
+*/
+static inline int cbox_any_nan_in(const cbx_cbox *in)
+{
+    return cbx_is_nan(in->c[0]) | cbx_is_nan(in->c[1]) | cbx_is_nan(in->c[2])
+           | cbx_is_nan(in->h[0]) | cbx_is_nan(in->h[1]) | cbx_is_nan(in->h[2]);
+}
+
 /*@ requires \valid_read(in);
     assigns \nothing;
     ensures \result != 0 <==> box_nan(in);
 */
 static inline int box_any_nan(const cbx_box *in)
 {
-    return cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2])
-           || cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2]);
+    return cbx_is_nan(in->lo[0]) | cbx_is_nan(in->lo[1]) | cbx_is_nan(in->lo[2])
+           | cbx_is_nan(in->hi[0]) | cbx_is_nan(in->hi[1]) | cbx_is_nan(in->hi[2]);
 }
 
 /*@ requires \valid_read(in);
@@ -112,8 +140,8 @@ static inline int box_any_nan(const cbx_box *in)
 */
 static inline int box_any_empty(const cbx_box *in)
 {
-    return cbx_no_point(in->lo[0], in->hi[0]) || cbx_no_point(in->lo[1], in->hi[1])
-           || cbx_no_point(in->lo[2], in->hi[2]);
+    return cbx_no_point(in->lo[0], in->hi[0]) | cbx_no_point(in->lo[1], in->hi[1])
+           | cbx_no_point(in->lo[2], in->hi[2]);
 }
 
 /* The special outputs: the whole space (CBX_EINVAL, whole axes) and the

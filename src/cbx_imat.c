@@ -72,10 +72,10 @@ static cbx_icoord icoord_of(cbx_fp ml0, cbx_fp mh0, cbx_fp ml1, cbx_fp mh1, cbx_
 */
 static int imat_row_bad(const cbx_imat *a, int i)
 {
-    return cbx_is_nan(a->lo[i][0]) || cbx_is_nan(a->hi[i][0]) || cbx_is_inverted(a->lo[i][0], a->hi[i][0])
-           || cbx_is_nan(a->lo[i][1]) || cbx_is_nan(a->hi[i][1]) || cbx_is_inverted(a->lo[i][1], a->hi[i][1])
-           || cbx_is_nan(a->lo[i][2]) || cbx_is_nan(a->hi[i][2]) || cbx_is_inverted(a->lo[i][2], a->hi[i][2])
-           || cbx_is_nan(a->lo[i][3]) || cbx_is_nan(a->hi[i][3]) || cbx_is_inverted(a->lo[i][3], a->hi[i][3]);
+    return cbx_is_nan(a->lo[i][0]) | cbx_is_nan(a->hi[i][0]) | cbx_is_inverted(a->lo[i][0], a->hi[i][0])
+           | cbx_is_nan(a->lo[i][1]) | cbx_is_nan(a->hi[i][1]) | cbx_is_inverted(a->lo[i][1], a->hi[i][1])
+           | cbx_is_nan(a->lo[i][2]) | cbx_is_nan(a->hi[i][2]) | cbx_is_inverted(a->lo[i][2], a->hi[i][2])
+           | cbx_is_nan(a->lo[i][3]) | cbx_is_nan(a->hi[i][3]) | cbx_is_inverted(a->lo[i][3], a->hi[i][3]);
 }
 
 /* 1 if some entry of a is NaN or inverted (specs: imat_bad). */

@@ -134,7 +134,7 @@ static axis_result transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
         r.lo = e.lo;
         r.hi = e.hi;
         r.ok = 1;
-    } else if (cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)) {
+    } else if (cbx_fin4(m0, m1, m2, t)) {
         end_result lo = ext_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         end_result hi = ext_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         r.lo = lo.v;
@@ -155,17 +155,7 @@ static axis_result transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
 */
 static int any_nan(const cbx_affine *a, const cbx_box *in)
 {
-    if (cbx_is_nan(a->m[0][0]) || cbx_is_nan(a->m[0][1]) || cbx_is_nan(a->m[0][2]) || cbx_is_nan(a->m[0][3]))
-        return 1;
-    if (cbx_is_nan(a->m[1][0]) || cbx_is_nan(a->m[1][1]) || cbx_is_nan(a->m[1][2]) || cbx_is_nan(a->m[1][3]))
-        return 1;
-    if (cbx_is_nan(a->m[2][0]) || cbx_is_nan(a->m[2][1]) || cbx_is_nan(a->m[2][2]) || cbx_is_nan(a->m[2][3]))
-        return 1;
-    if (cbx_is_nan(in->lo[0]) || cbx_is_nan(in->lo[1]) || cbx_is_nan(in->lo[2]))
-        return 1;
-    if (cbx_is_nan(in->hi[0]) || cbx_is_nan(in->hi[1]) || cbx_is_nan(in->hi[2]))
-        return 1;
-    return 0;
+    return aff_any_nan(a) | box_any_nan(in);
 }
 
 /* One check per map and per box: the branch-free kernel on the fast range

@@ -127,8 +127,8 @@ static mspan mot_axis_union(double r0, double q0, double r1, double q1,
     mspan r;
     int fa = cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     int fb = cbx_row_ok(n0, n1, n2, u, l0, h0, l1, h1, l2, h2);
-    int ma = cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t);
-    int mb = cbx_is_fin(n0) && cbx_is_fin(n1) && cbx_is_fin(n2) && cbx_is_fin(u);
+    int ma = cbx_fin4(m0, m1, m2, t);
+    int mb = cbx_fin4(n0, n1, n2, u);
     if (fa && fb) {
         r.lo = cbx_min2(r0, r1);
         r.hi = cbx_max2(q0, q1);

@@ -27,6 +27,9 @@
 #define ext_hi_end ext_hi_end_f
 #define sel_lo sel_lo_f
 #define sel_hi sel_hi_f
+#define aff_nan aff_nan_f
+#define box_nan box_nan_f
+#define cbox_nan cbox_nan_f
 #define has_nan has_nan_f
 #define no_point no_point_f
 #define is_empty is_empty_f
@@ -51,8 +54,6 @@
 #define cbox_tight cbox_tight_f
 #define crow_in_dom crow_in_dom_f
 #define cbox_has_nan cbox_has_nan_f
-#define cbox_nan cbox_nan_f
-#define box_nan box_nan_f
 #define cbox_empty cbox_empty_f
 #define cwhole_axis cwhole_axis_f
 #define cwhole cwhole_f
@@ -74,7 +75,6 @@
 #define sq_bound_scale sq_bound_scale_f
 #define in_dom508 in_dom_ep_f
 #define cls_254 cls_ep_f
-#define aff_nan aff_nan_f
 #define ball_gap ball_gap_f
 #define ball_tight ball_tight_f
 #define sph_dom sph_dom_f
@@ -106,6 +106,9 @@
 #undef ext_hi_end
 #undef sel_lo
 #undef sel_hi
+#undef aff_nan
+#undef box_nan
+#undef cbox_nan
 #undef has_nan
 #undef no_point
 #undef is_empty
@@ -130,8 +133,6 @@
 #undef cbox_tight
 #undef crow_in_dom
 #undef cbox_has_nan
-#undef cbox_nan
-#undef box_nan
 #undef cbox_empty
 #undef cwhole_axis
 #undef cwhole
@@ -153,7 +154,6 @@
 #undef sq_bound_scale
 #undef in_dom508
 #undef cls_254
-#undef aff_nan
 #undef ball_gap
 #undef ball_tight
 #undef sph_dom

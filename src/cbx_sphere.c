@@ -317,20 +317,6 @@ static ball_res sphere_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
     return e;
 }
 
-/*@ requires \valid_read(a);
-    assigns \nothing;
-    ensures \result != 0 <==> aff_nan(a);
-*/
-static int aff_any_nan(const cbx_affine *a)
-{
-    if (cbx_is_nan(a->m[0][0]) || cbx_is_nan(a->m[0][1]) || cbx_is_nan(a->m[0][2]) || cbx_is_nan(a->m[0][3]))
-        return 1;
-    if (cbx_is_nan(a->m[1][0]) || cbx_is_nan(a->m[1][1]) || cbx_is_nan(a->m[1][2]) || cbx_is_nan(a->m[1][3]))
-        return 1;
-    return cbx_is_nan(a->m[2][0]) || cbx_is_nan(a->m[2][1]) || cbx_is_nan(a->m[2][2])
-           || cbx_is_nan(a->m[2][3]);
-}
-
 /* contract: src/certbox.h */
 cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
 {
@@ -415,11 +401,10 @@ static int ell_ok(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_fp 
 */
 static int ell_any_nan(const cbx_fp *center, const cbx_fp *radii, const cbx_fp (*rot)[3])
 {
-    if (cbx_is_nan(center[0]) || cbx_is_nan(center[1]) || cbx_is_nan(center[2])) return 1;
-    if (cbx_is_nan(radii[0]) || cbx_is_nan(radii[1]) || cbx_is_nan(radii[2])) return 1;
-    if (cbx_is_nan(rot[0][0]) || cbx_is_nan(rot[0][1]) || cbx_is_nan(rot[0][2])) return 1;
-    if (cbx_is_nan(rot[1][0]) || cbx_is_nan(rot[1][1]) || cbx_is_nan(rot[1][2])) return 1;
-    return cbx_is_nan(rot[2][0]) || cbx_is_nan(rot[2][1]) || cbx_is_nan(rot[2][2]);
+    return cbx_is_nan(center[0]) | cbx_is_nan(center[1]) | cbx_is_nan(center[2]) | cbx_is_nan(radii[0])
+           | cbx_is_nan(radii[1]) | cbx_is_nan(radii[2]) | cbx_is_nan(rot[0][0]) | cbx_is_nan(rot[0][1])
+           | cbx_is_nan(rot[0][2]) | cbx_is_nan(rot[1][0]) | cbx_is_nan(rot[1][1]) | cbx_is_nan(rot[1][2])
+           | cbx_is_nan(rot[2][0]) | cbx_is_nan(rot[2][1]) | cbx_is_nan(rot[2][2]);
 }
 
 /* One axis of the ellipsoid: the kernel inside the domain, [-inf, +inf]

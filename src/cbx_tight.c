@@ -322,7 +322,7 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
     tight_result r;
     r.lo = lo;
     r.hi = hi;
-    if (!(cbx_is_fin(m0) && cbx_is_fin(m1) && cbx_is_fin(m2) && cbx_is_fin(t)))
+    if (!cbx_fin4(m0, m1, m2, t))
         return r;
     if (cbx_is_fin(lo)) {
         end_result w0 = vertex_lo(m0, l0, h0);
