@@ -180,6 +180,14 @@
     complete behaviors; \
     disjoint behaviors;
 
+/* One box of cbx_transform_box returned by value (src/cbx_onebox.h):
+ * its whole promise restated on the values of *a and *b at Pre. */
+#define CBX_ONE_POST(a, b) \
+    ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(b, Pre), \result.o); \
+    ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(b, Pre), sev(\result.s)); \
+    ensures st: \result.s == CBX_OK || \result.s == CBX_EMPTY || \result.s == CBX_ERANGE \
+                || \result.s == CBX_EINVAL;
+
 /* What the batch forms promise for the map *a: for every k < n, out[k] is
  * cbx_transform_box's output for in[k] (box_done_m), and the result is the
  * most severe status met (CBX_OK when n == 0). */

@@ -235,6 +235,16 @@
     // entry and every box end at most CBX_SB (2^509; binary32 2^61) in
     // magnitude, every box axis ordered, every translation at most CBX_RT.
     // Every pair then lies in the first magnitude class: the row is full.
+    // map_fast on the twelve values (the batch loop carries it on the
+    // values read at entry, which no write to out can change).
+    predicate map_fast_v(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13,
+                         cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23) =
+         -CBX_SB <= a00 <= CBX_SB && -CBX_SB <= a01 <= CBX_SB && -CBX_SB <= a02 <= CBX_SB && -CBX_RT <= a03 <= CBX_RT
+      && -CBX_SB <= a10 <= CBX_SB && -CBX_SB <= a11 <= CBX_SB && -CBX_SB <= a12 <= CBX_SB && -CBX_RT <= a13 <= CBX_RT
+      && -CBX_SB <= a20 <= CBX_SB && -CBX_SB <= a21 <= CBX_SB && -CBX_SB <= a22 <= CBX_SB && -CBX_RT <= a23 <= CBX_RT
+      && \is_finite(a00) && \is_finite(a01) && \is_finite(a02) && \is_finite(a03)
+      && \is_finite(a10) && \is_finite(a11) && \is_finite(a12) && \is_finite(a13)
+      && \is_finite(a20) && \is_finite(a21) && \is_finite(a22) && \is_finite(a23);
     predicate map_fast(cbx_affine *a) =
          -CBX_SB <= a->m[0][0] <= CBX_SB && -CBX_SB <= a->m[0][1] <= CBX_SB
       && -CBX_SB <= a->m[0][2] <= CBX_SB && -CBX_RT <= a->m[0][3] <= CBX_RT

@@ -2,11 +2,13 @@
  * Batch forms of the interval transform: cbx_transform_boxes (a map) and
  * cbx_transform_boxes_prep (a prepared map), the most severe status met.
  * binary64: the map's class is found once per call (cbx_classify, so a
- * prepared map's recorded class and fast flag are not trusted here); a
- * general map sends every box to cbx_transform_box (one range check of the
- * map and one of the box, then the branch-free kernel), a map of a smaller
- * class to the class kernel (cbx_transform_box_as).  binary32:
- * cbx_transform_boxf.  Either way out[k] is exactly
+ * prepared map's recorded class and fast flag are not trusted here).  A
+ * general map (every map in binary32) is checked once per call for the fast
+ * range; then each box in the fast range goes straight to the branch-free
+ * kernel (one check of the box), any other box and every box under a map
+ * outside the fast range to cbx_transform_box (the careful path; binary32:
+ * cbx_transform_boxf), and a map of a smaller class sends every box to the
+ * class kernel (cbx_transform_box_as).  Either way out[k] is exactly
  * cbx_transform_box_as(a, cbx_classify(a), in + k, out + k)'s output
  * (binary32: cbx_transform_boxf's).  The call for box k writes exactly
  * out[k]; the loop invariant carries each finished box's whole promise as a
@@ -58,17 +60,20 @@ static void put_box(cbx_box *out, size_t k, size_t n, cbx_box o)
 /*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
     requires k: k < n;
+    requires fast: fast != 0 ==> map_fast_v(CBX_AV(a, Here));
     assigns out[k];
     ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(in + k, Pre), out[k]);
     ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(in + k, Pre), sev(\result));
     ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE || \result == CBX_EINVAL;
     ensures frame: \forall integer j; 0 <= j < n && j != k ==> out[j] == \at(out[j], Pre);
 */
-static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in, cbx_box *out,
-                       size_t k, size_t n)
+static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_box *in,
+                       cbx_box *out, size_t k, size_t n)
 {
     box_st r;
-    if (CBX_IS_GENERAL)
+    if (fast)
+        r = one_fast(a, in + k);
+    else if (CBX_IS_GENERAL)
         r = one_box(a, in + k);
     else
         r = CBX_ONE_BOX(a, in + k);
@@ -79,10 +84,11 @@ static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in, cbx
 /* The loop over the boxes under one map, checked by the caller. */
 /*@ requires valid: \valid_read(a) && \valid_read(in + (0 .. n - 1)) && \valid(out + (0 .. n - 1));
     requires sep: \separated(out + (0 .. n - 1), a) && \separated(out + (0 .. n - 1), in + (0 .. n - 1));
+    requires fast: fast != 0 ==> map_fast(a);
     assigns out[0 .. n - 1];
     CBX_BATCH_POST(a)
 */
-static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in,
+static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_box *in,
                         cbx_box *out, size_t n)
 {
     cbx_status worst = CBX_OK;
@@ -95,11 +101,12 @@ static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, const cbx_box *in,
         loop invariant met: (k == 0 && worst == CBX_OK)
           || (\exists integer j; 0 <= j < k && box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(worst)));
         loop invariant stv: worst == CBX_OK || worst == CBX_EMPTY || worst == CBX_ERANGE || worst == CBX_EINVAL;
+        loop invariant fst: fast != 0 ==> map_fast_v(CBX_AV(a, Pre));
         loop assigns k, worst, out[0 .. n - 1];
         loop variant n - k;
     */
     for (k = 0; k < n; k++) {
-        cbx_status s = step(a CBX_CLS_ARG, in, out, k, n);
+        cbx_status s = step(a CBX_CLS_ARG, fast, in, out, k, n);
         /*@ assert this: \forall integer j; j == k ==>
               box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]); */
         /*@ assert sevk: \forall integer j; j == k ==>
@@ -116,7 +123,8 @@ cbx_status cbx_transform_boxes(const cbx_affine *a, const cbx_box *in, cbx_box *
 #if CBX_INST == 64
     cbx_class cls = cbx_classify(a);   /* once per call */
 #endif
-    return batch(a CBX_CLS_ARG, in, out, n);
+    /* a general map is checked once for the fast range, not once per box */
+    return batch(a CBX_CLS_ARG, CBX_IS_GENERAL && cbx_map_fast(a), in, out, n);
 }
 
 /* Nothing of *p but its map is used (the class is found again, once per

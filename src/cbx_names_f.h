@@ -40,6 +40,7 @@
 #define axis_proven axis_proven_f
 #define axis_sound_s axis_sound_s_f
 #define axis_ok_s axis_ok_s_f
+#define map_fast_v map_fast_v_f
 #define map_fast map_fast_f
 #define box_fast box_fast_f
 #define prepared prepared_f
@@ -119,6 +120,7 @@
 #undef axis_proven
 #undef axis_sound_s
 #undef axis_ok_s
+#undef map_fast_v
 #undef map_fast
 #undef box_fast
 #undef prepared

@@ -9,6 +9,7 @@
 
 #include "certbox.h"
 #include "cbx_prec.h"
+#include "cbx_fast.h"
 
 /* One box, returned by value: cbx_transform_box's promise restated on
  * values (the output is a value, not memory, until put_box writes it). */
@@ -16,10 +17,7 @@ typedef struct box_st { cbx_box o; cbx_status s; } box_st;
 
 /*@ requires valid: \valid_read(a) && \valid_read(b);
     assigns \nothing;
-    ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(b, Pre), \result.o);
-    ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(b, Pre), sev(\result.s));
-    ensures st: \result.s == CBX_OK || \result.s == CBX_EMPTY || \result.s == CBX_ERANGE
-                || \result.s == CBX_EINVAL;
+    CBX_ONE_POST(a, b)
 */
 static inline box_st one_box(const cbx_affine *a, const cbx_box *b)
 {
@@ -28,14 +26,53 @@ static inline box_st one_box(const cbx_affine *a, const cbx_box *b)
     return r;
 }
 
+/* The branch-free kernel with cbx_transform_box's contract, on a map and a
+ * box in the fast range. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && \separated(out, in);
+    requires fast: map_fast(a) && box_fast(in);
+    assigns *out;
+    CBX_BOX_BEHAVIORS(a, in, out)
+*/
+static inline cbx_status fast_box_b(const cbx_affine *a, const cbx_box *in, cbx_box *out)
+{
+    return cbx_fast_box(a, in, out);
+}
+
+/* one_box on a map and a box in the fast range: the kernel alone. */
+/*@ requires valid: \valid_read(a) && \valid_read(b);
+    requires fast: map_fast(a) && box_fast(b);
+    assigns \nothing;
+    CBX_ONE_POST(a, b)
+*/
+static inline box_st one_kernel(const cbx_affine *a, const cbx_box *b)
+{
+    box_st r;
+    r.s = fast_box_b(a, b, &r.o);
+    return r;
+}
+
+/* The same under a map checked once to be in the fast range (the batch
+ * loop): a box in the fast range goes straight to the branch-free kernel,
+ * any other to cbx_transform_box.  The output is cbx_transform_box's, bit
+ * for bit: it takes the same kernel on the same inputs. */
+/*@ requires valid: \valid_read(a) && \valid_read(b);
+    requires fast: map_fast(a);
+    assigns \nothing;
+    CBX_ONE_POST(a, b)
+*/
+static inline box_st one_fast(const cbx_affine *a, const cbx_box *b)
+{
+    if (cbx_box_fast(b))
+        return one_kernel(a, b);
+    return one_box(a, b);
+}
+
 #if CBX_INST == 64
 /* The same through a class kernel (cls: a hint, checked by the kernel). */
 /*@ requires valid: \valid_read(a) && \valid_read(b);
     assigns \nothing;
-    ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(b, Pre), \result.o);
-    ensures sev: box_sev_v(CBX_AV(a, Pre), CBX_BV(b, Pre), sev(\result.s));
-    ensures st: \result.s == CBX_OK || \result.s == CBX_EMPTY || \result.s == CBX_ERANGE
-                || \result.s == CBX_EINVAL;
+    CBX_ONE_POST(a, b)
 */
 static inline box_st one_box_as(const cbx_affine *a, cbx_class cls, const cbx_box *b)
 {
