@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Mutation check: do the fast exact tests catch deliberate faults in src/?
+# Mutation check: do the fast exact tests catch deliberate faults in src/ (and tools/)?
 #
 #   bash scripts/mutants.sh [ID...]      (no ID: every mutant of the list)
 #
-# The checkout's src/, specs/, tests/, examples/ and Makefile (never .git or
+# The checkout's src/, specs/, tests/, examples/, tools/ and Makefile (never .git or
 # build/) are copied into a scratch directory (mktemp -d).  specs/ is copied
 # because the Makefile lists specs/cbx_spec.h among the library's
 # prerequisites; nothing under specs/ is ever mutated.  The pristine copy is
@@ -94,8 +94,8 @@ def parse(path):
     dup = sorted(set(i for i in ids if ids.count(i) > 1))
     if dup: sys.exit("mutants.txt: duplicate ids: %s" % ', '.join(dup))
     for m in muts:
-        if not m['file'].startswith('src/') or '..' in m['file']:
-            sys.exit("mutant %s: file %s is not under src/" % (m['id'], m['file']))
+        if not m['file'].startswith(('src/', 'tools/')) or '..' in m['file']:
+            sys.exit("mutant %s: file %s is not under src/ or tools/" % (m['id'], m['file']))
         if m['find'] == m['repl'] or not m['find']:
             sys.exit("mutant %s: empty search string or replacement equal to it (no-op)" % m['id'])
     return muts
@@ -150,7 +150,7 @@ fi
 trap 'exit 130' INT TERM
 BASE=$SCR/base
 mkdir -p "$BASE"
-for d in src specs tests examples; do
+for d in src specs tests examples tools; do
     [ -d "$ROOT/$d" ] || die "$ROOT/$d missing"
     cp -pR "$ROOT/$d" "$BASE/$d"
 done
