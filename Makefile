@@ -42,21 +42,26 @@ CXX      ?= c++
 IEEEFLAGS := -ffp-contract=off -fno-fast-math
 WARN      := -Wall -Wextra -Wpedantic -Werror
 CFLAGS   ?= -O2
-ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Isrc
+# the public headers, then the layers of src/ (scripts/incs.sh: the same list)
+INC       := -Iinclude -Isrc/core -Isrc/algo -Isrc/f64
+ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) $(INC)
+# programs that use the library as a client would: the public header alone
+PUBCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Iinclude
 SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
-LIBSRC  := src/cbx_interval.c src/cbx_center.c src/cbx_convert.c src/cbx_sphere.c src/cbx_status.c src/cbx_batch.c src/cbx_tight.c src/cbx_class.c src/cbx_motion.c src/cbx_imat.c \
-           src/cbx_interval_f.c src/cbx_center_f.c src/cbx_convert_f.c src/cbx_sphere_f.c src/cbx_batch_f.c \
-           src/cbx_ieee.c src/cbx_ieee_f.c
-HEADERS := src/certbox.h src/cbx_api.h src/cbx_build.h src/cbx_prec.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h src/cbx_round.h src/cbx_domain.h src/cbx_endpoints.h src/cbx_vertex.h src/cbx_kernel.h src/cbx_fast.h src/cbx_eft.h src/cbx_ieee_cases.h src/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h
+LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c \
+           src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c \
+           src/core/cbx_ieee.c src/f32/cbx_ieee_f.c
+HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
 # that source changes
-FAMSRC  := $(patsubst src/%_f.c,%,$(filter %_f.c,$(LIBSRC)))
-$(foreach f,$(FAMSRC),$(eval $(B)/obj/$(f)_f.o $(B)/pic/$(f)_f.o: src/$(f).c))
+FAMSRC  := $(patsubst src/f32/%_f.c,%,$(filter %_f.c,$(LIBSRC)))
+famof    = $(filter %/$(1).c,$(LIBSRC))
+$(foreach f,$(FAMSRC),$(eval $(B)/obj/f32/$(f)_f.o $(B)/pic/f32/$(f)_f.o: $(call famof,$(f))))
 SONAME  := libcertbox.so.$(SOVERSION)
 
 .PHONY: fuzz fuzz-check mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
@@ -87,7 +92,7 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 # ---- tests ---------------------------------------------------------------
 TESTUTIL := tests/exact_util.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
-	$(CC) $(ALLCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+	$(CC) $(PUBCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # The scene tool (issue 6): tools/certbox/, built with the library's flags.  An
 # optional dependency of the tool adds its flags to TOOL_CFLAGS and its
 # libraries to TOOL_LIBS (before -lm); the library itself never links them.
@@ -111,29 +116,29 @@ $(shell mkdir -p $(B) && { [ "$$(cat $(TOOL_STAMP) 2>/dev/null)" = "gltf=$(HAVE_
 NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjansson-dev): run sh scripts/deps.sh test as root, or apt-get install libjansson-dev" >&2; exit 1; }
 $(B)/certbox: tools/certbox/main.c $(SCENESRC) $(GLTFSRC) tools/certbox/scene.h tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a $(TOOL_STAMP)
 	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
-	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) tools/certbox/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
+	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) tools/certbox/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
 # the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c)
 GLTFORACLE   := tests/gltf_oracle.c
 $(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
-	$(CC) $(ALLCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
+	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lgmp -lm -o $@
 $(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(LIBSRC) $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) -Isrc -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) $(INC) -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lgmp -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
-	$(CC) $(ALLCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+	$(CC) $(PUBCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itools/certbox -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itools/certbox -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
-# the tight mode with the fma-free two_prod (Dekker's product, src/cbx_eft.h)
+# the tight mode with the fma-free two_prod (Dekker's product, src/core/cbx_eft.h)
 $(B)/test_tight_nofma: tests/test_tight.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -DCBX_NO_FMA -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 $(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) -Isrc -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
 
 demo: check-deps-test
 	$(MAKE) $(B)/demo $(B)/certbox
@@ -205,14 +210,15 @@ ieee-check: all
 	sh scripts/ieee.sh $(CC)
 
 # The public header compiles as C99, C11 and C++; the binary32 name list is
-# up to date and no macro of the precision tables leaks past certbox.h.
+# up to date and no macro of the precision tables leaks past certbox.h;
+# include/ alone on the include path (what an install holds).
 header-check:
 	@mkdir -p $(B)
 	python3 scripts/names.py --check
 	printf '#include "certbox.h"\n#if defined(cbx_fp) || defined(CBX_INST) || defined(CBX_U) || defined(cbx_boxf) || defined(has_nan)\n#error leak\n#endif\nint main(void){cbx_box b; cbx_boxf f; (void)b; (void)f; return 0;}\n' > $(B)/hc.c
-	$(CC) -std=c99 $(WARN) -Isrc -c $(B)/hc.c -o $(B)/hc.o
-	$(CC) -std=c11 $(WARN) -Isrc -c $(B)/hc.c -o $(B)/hc.o
-	cp $(B)/hc.c $(B)/hc.cc && $(CXX) -std=c++11 $(WARN) -Isrc -c $(B)/hc.cc -o $(B)/hc.o
+	$(CC) -std=c99 $(WARN) -Iinclude -c $(B)/hc.c -o $(B)/hc.o
+	$(CC) -std=c11 $(WARN) -Iinclude -c $(B)/hc.c -o $(B)/hc.o
+	cp $(B)/hc.c $(B)/hc.cc && $(CXX) -std=c++11 $(WARN) -Iinclude -c $(B)/hc.cc -o $(B)/hc.o
 
 # ---- proofs --------------------------------------------------------------
 # Both write build/proof (logs, report.md); no tracked file changes.
@@ -333,7 +339,7 @@ install-check: all check-deps-test
 # ---- install -------------------------------------------------------------
 # certbox.h and what it includes (both families' API, the precision tables,
 # and the ACSL logic that Frama-C users of the contracts need).
-PUBHDR := src/certbox.h src/cbx_api.h src/cbx_prec_begin.h src/cbx_prec_end.h src/cbx_names_f.h \
+PUBHDR := $(wildcard include/*.h) \
           specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
 # The CMake package (cmake/*.cmake.in): its paths relative to its own place
 # (realpath -s: by name, not through this machine's symlinks), so that the
@@ -395,11 +401,11 @@ clean:
 BENCHARGS      := -n 20000 -r 11 -calls 200000 -exact 20000 -gmp 2000 -cache 1000 -big 4000000
 BENCHSMOKEARGS := -n 2000 -r 11 -calls 10000 -exact 2000 -gmp 200 -cache 500 -big 50000
 BENCHNATIVE    := -O3 -march=native
-NATIVECFLAGS   := -std=c99 $(WARN) $(IEEEFLAGS) $(BENCHNATIVE) -Isrc
+NATIVECFLAGS   := -std=c99 $(WARN) $(IEEEFLAGS) $(BENCHNATIVE) $(INC)
 NATIVEOBJ      := $(LIBSRC:src/%.c=$(B)/native/obj/%.o)
 BENCHSRC       := tests/bench.c tests/bench_ref.h $(TESTUTIL) tests/exact_util.h
 .PHONY: bench bench-smoke branchfree
-$(foreach f,$(FAMSRC),$(eval $(B)/native/obj/$(f)_f.o: src/$(f).c))
+$(foreach f,$(FAMSRC),$(eval $(B)/native/obj/f32/$(f)_f.o: $(call famof,$(f))))
 $(B)/native/obj/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(NATIVECFLAGS) -c $< -o $@
@@ -438,8 +444,8 @@ $(B)/bench_scene: tests/bench_scene.c
 	@mkdir -p $(@D)
 	$(CC) $(ALLCFLAGS) -DBENCH_FLAGS='"$(ALLCFLAGS)"' $< -lm -o $@
 
-# The fast path is branch-free: cbx_fast_box (src/cbx_fast.h), both formats,
+# The fast path is branch-free: cbx_fast_box (src/algo/cbx_fast.h), both formats,
 # compiled with the library's flags at -O2 into two wrappers, disassembled;
 # fails on any conditional branch or call in them (scripts/branchfree.sh).
 branchfree:
-	sh scripts/branchfree.sh "$(CC)" -std=c99 $(WARN) $(IEEEFLAGS) -O2 -Isrc -Ispecs
+	sh scripts/branchfree.sh "$(CC)" -std=c99 $(WARN) $(IEEEFLAGS) -O2 $(INC) -Ispecs

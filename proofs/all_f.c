@@ -1,5 +1,5 @@
 /* The binary32 family as one translation unit, for Frama-C: the same
- * sources as proofs/all.c instantiated for float (src/cbx_prec.h), alone
+ * sources as proofs/all.c instantiated for float (src/core/cbx_prec.h), alone
  * in the provers' context (CBX_FRAMAC_ONLY_32). */
 #define CBX_FRAMAC_ONLY_32 1
 #define CBX_FLOAT 1

@@ -1,8 +1,8 @@
 #!/bin/sh
 # Is the fast path branch-free?  Compiles tests/branchfree.c twice with the
 # given compiler and flags (make branchfree: the library's flags at -O2,
-# -Isrc -Ispecs): binary64 (wrapper bf64) and with -DCBX_FLOAT=1 (bf32),
-# each a call of cbx_fast_box (src/cbx_fast.h) with everything it calls
+# $(INC) -Ispecs): binary64 (wrapper bf64) and with -DCBX_FLOAT=1 (bf32),
+# each a call of cbx_fast_box (src/algo/cbx_fast.h) with everything it calls
 # inlined.  Disassembles each wrapper with objdump -d and fails on any
 # conditional branch (x86: every j* but jmp, loop*, jrcxz; AArch64: b.cond,
 # cbz, cbnz, tbz, tbnz; ARM: b<cond>) and on any call (a call could hide

@@ -18,8 +18,8 @@ XCC=${XCC:-arm-linux-gnueabihf-gcc}
 QEMU=${QEMU:-qemu-arm}
 B=build/cross
 mkdir -p $B
-F="-std=c99 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fno-fast-math -O2 -Isrc -Itests"
-LIB="src/cbx_*.c"
+F="-std=c99 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fno-fast-math -O2 $(sh scripts/incs.sh) -Itests"
+LIB="src/*/cbx_*.c"
 # suite and arguments (host and ARM alike); sizes keep qemu under ~2 minutes
 # (NAME_nofma: tests/test_NAME.c and the library built with -DCBX_NO_FMA,
 # compared with build/test_NAME_nofma; eft: both two_prod forms, GMP)
@@ -95,9 +95,9 @@ done
 $XCC $F tests/test_ieee.c $LIB -static -lm -o $B/test_ieee
 if $QEMU $B/test_ieee plain 0 > $B/ieee.txt; then pass=$((pass + 1)); echo "cross: ok   $(head -1 $B/ieee.txt)"
 else fail=$((fail + 1)); echo "cross: FAIL $(head -1 $B/ieee.txt)"; fi
-G="-std=gnu99 -O2 -Isrc -mfpu=neon-vfpv4 -mfloat-abi=hard"
-$XCC $G -c src/cbx_ieee.c -o $B/v1.o && $XCC $G -c src/cbx_ieee_f.c -o $B/v2.o
-$XCC $F tests/test_ieee.c $B/v1.o $B/v2.o src/cbx_status.c -static -lm -o $B/test_ieee_gnu
+G="-std=gnu99 -O2 $(sh scripts/incs.sh) -mfpu=neon-vfpv4 -mfloat-abi=hard"
+$XCC $G -c src/core/cbx_ieee.c -o $B/v1.o && $XCC $G -c src/f32/cbx_ieee_f.c -o $B/v2.o
+$XCC $F tests/test_ieee.c $B/v1.o $B/v2.o src/core/cbx_status.c -static -lm -o $B/test_ieee_gnu
 if $QEMU $B/test_ieee_gnu plain 1 > $B/ieee_gnu.txt; then
   pass=$((pass + 1)); echo "cross: ok   GNU mode on VFPv4 (contracts a*b+c): $(head -1 $B/ieee_gnu.txt | sed 's/.*: //')"
 else fail=$((fail + 1)); echo "cross: FAIL GNU mode on VFPv4 not caught: $(head -1 $B/ieee_gnu.txt)"; fi

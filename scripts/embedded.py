@@ -25,6 +25,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# the library's include folders (scripts/incs.sh: one list for every build)
+INCS = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
 OUT = os.path.join(ROOT, 'build', 'embedded')
 CC = sys.argv[1] if len(sys.argv) > 1 else 'arm-none-eabi-gcc'
 TARGETS = [
@@ -39,12 +41,12 @@ TARGETS = [
 # negative number, so errno is never set anyway).
 FLAGS = ['-std=c99', '-Wall', '-Wextra', '-Wpedantic', '-Werror', '-ffp-contract=off',
          '-fno-fast-math', '-fno-math-errno', '-ffreestanding', '-ffunction-sections',
-         '-I' + os.path.join(ROOT, 'src')]
+        ] + ['-I' + os.path.join(ROOT, d[2:]) for d in INCS]
 PUBLIC = ['cbx_transform_box', 'cbx_transform_boxes', 'cbx_transform_cbox', 'cbx_box_to_cbox',
           'cbx_cbox_to_box', 'cbx_sphere_box', 'cbx_ellipsoid_box']
 PUBLIC64 = ['cbx_transform_box_tight', 'cbx_classify', 'cbx_transform_box_as', 'cbx_motion_box']
 ALLOWED = re.compile(r'^(__aeabi_\w+|sqrt|sqrtf)$')
-# The binary64 tight mode's two_prod (src/cbx_eft.h) is an fma where the
+# The binary64 tight mode's two_prod (src/core/cbx_eft.h) is an fma where the
 # target has the instruction (M7: vfma.f64) or glibc's, else Dekker's
 # product (M4F, freestanding: no fma call).  libm's fma is allowed in
 # cbx_tight.o only where the fma form is selected (by -DCBX_USE_FMA on a
@@ -55,7 +57,7 @@ FMA_IN = {'cbx_tight.o': re.compile(r'^fma$')}
 
 def two_prod_form(flags):
     """the two_prod form cbx_eft.h selects for these flags, from its macros"""
-    out = run([CC] + FLAGS + flags + ['-dM', '-E', os.path.join(ROOT, 'src', 'cbx_eft.h')])
+    out = run([CC] + FLAGS + flags + ['-dM', '-E', os.path.join(ROOT, 'src', 'core', 'cbx_eft.h')])
     name = re.search(r'#define CBX_TWO_PROD_NAME "([^"]+)"', out).group(1)
     dekker = re.search(r'#define CBX_EFT_DEKKER 1\b', out) is not None
     fast = re.search(r'#define __FP_FAST_FMA 1\b', out) is not None
@@ -75,7 +77,7 @@ def build(target, flags, opt):
     os.makedirs(d, exist_ok=True)
     for f in glob.glob(os.path.join(d, '*')):
         os.remove(f)
-    srcs = sorted(glob.glob(os.path.join(ROOT, 'src', 'cbx_*.c')))
+    srcs = sorted(glob.glob(os.path.join(ROOT, 'src', '*', 'cbx_*.c')))
     for s in srcs:
         o = os.path.join(d, os.path.basename(s)[:-2] + '.o')
         run([CC] + FLAGS + flags + [opt, '-fstack-usage', '-fcallgraph-info=su', '-c', s, '-o', o], cwd=d)
@@ -164,7 +166,7 @@ def main():
         allowed_in = {} if dekker else FMA_IN
         lines.append('## %s\n' % title)
         lines.append('`%s`\n' % ' '.join(flags))
-        lines.append('two_prod (tight mode, src/cbx_eft.h): %s; %s.\n'
+        lines.append('two_prod (tight mode, src/core/cbx_eft.h): %s; %s.\n'
                      % (name, 'no double fma instruction (no __FP_FAST_FMA), freestanding: no trusted libm fma'
                         if dekker else 'double fma instruction (__FP_FAST_FMA)' if fast
                         else 'the C library\'s fma, as selected by the flags'))

@@ -47,6 +47,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# the library's include folders (scripts/incs.sh: one list for every build)
+INCS = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
 sys.path.insert(0, os.path.join(ROOT, 'scripts', 'evidence'))
 sys.path.insert(0, os.path.join(ROOT, 'proofs'))
 import contracts  # noqa: E402
@@ -274,14 +276,14 @@ def coverage(raw, b):
     shutil.rmtree(b, ignore_errors=True)
     os.makedirs(os.path.join(b, 'obj'))
     objs = []
-    for s in sorted(glob.glob(os.path.join(ROOT, 'src', 'cbx_*.c'))):
+    for s in sorted(glob.glob(os.path.join(ROOT, 'src', '*', 'cbx_*.c'))):
         o = os.path.join(b, 'obj', os.path.basename(s)[:-2] + '.o')
-        sh([CC] + FLAGS + ['-O0', '--coverage', '-Isrc', '-c', s, '-o', o])
+        sh([CC] + FLAGS + ['-O0', '--coverage', *INCS, '-c', s, '-o', o])
         objs.append(o)
     scene = []
     for s in ['tools/certbox/scene.c']:
         o = os.path.join(b, 'obj', 'scene.o')
-        sh([CC] + FLAGS + ['-O0', '-Isrc', '-Itools/certbox', '-c', s, '-o', o])
+        sh([CC] + FLAGS + ['-O0', *INCS, '-Itools/certbox', '-c', s, '-o', o])
         scene.append(o)
     same = []
     gltf = []
@@ -291,7 +293,7 @@ def coverage(raw, b):
         for s, o in [('tools/certbox/gltf.c', 'gltf.o'), ('tests/gltf_oracle.c', 'gltf_oracle.o')]:
             o = os.path.join(b, 'obj', o)
             sh([CC] + FLAGS + ['-O0', '-DCBX_GLTF'] + jansson_flags('--cflags')
-               + ['-Isrc', '-Itools/certbox', '-Itests', '-c', s, '-o', o])
+               + [*INCS, '-Itools/certbox', '-Itests', '-c', s, '-o', o])
             gltf.append(o)
     for i, (name, args) in enumerate(SUITES):
         exe = os.path.join(b, 'test_' + name)
@@ -301,7 +303,7 @@ def coverage(raw, b):
             extra = scene + ['-Itools/certbox'] if name == 'scene' else []
             if name == 'gltf':
                 extra = gltf + ['-DCBX_GLTF', '-Itools/certbox'] + jansson_flags('--cflags') + jansson_flags('--libs')
-            sh([CC] + FLAGS + ['-O0', '--coverage', '-Isrc', '-Itests', 'tests/test_%s.c' % name,
+            sh([CC] + FLAGS + ['-O0', '--coverage', *INCS, '-Itests', 'tests/test_%s.c' % name,
                                'tests/exact_util.c'] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
         r = sh([exe] + args, check=False)
         # the -O0 build must compute exactly what the -O2 build did
@@ -311,7 +313,7 @@ def coverage(raw, b):
         if not ok:
             failures.append('coverage: test_%s at -O0 --coverage printed something else than at -O2' % run_name(i))
     r = sh(['gcovr', '--root', ROOT, '--object-directory', os.path.join(b, 'obj'),
-            '--filter', os.path.join(ROOT, 'src') + '/', '--exclude', os.path.join(ROOT, 'src', 'scene') + '/',
+            '--filter', os.path.join(ROOT, 'src') + '/', '--filter', os.path.join(ROOT, 'include') + '/',
             '--json', os.path.join(raw, 'coverage.json'), os.path.join(b, 'obj')], check=True)
     data = json.load(open(os.path.join(raw, 'coverage.json')))
     waivers = load_waivers()
@@ -390,16 +392,16 @@ def standard(raw, b):
     cb = os.path.join(b, 'cppcheck')
     shutil.rmtree(cb, ignore_errors=True)
     os.makedirs(cb)
-    srcs = sorted(glob.glob(os.path.join(ROOT, 'src', 'cbx_*.c')))
+    srcs = sorted(glob.glob(os.path.join(ROOT, 'src', '*', 'cbx_*.c')))
     rel = [os.path.relpath(s, ROOT) for s in srcs]
     cp = sh(['cppcheck', '--addon=misra', '--std=c99', '--enable=style,warning,portability',
              '--cppcheck-build-dir=' + cb,
-             '--inline-suppr', '-Isrc', '--quiet', '-D__GNUC__', '-DFLT_EVAL_METHOD=0',
+             '--inline-suppr', *INCS, '--quiet', '-D__GNUC__', '-DFLT_EVAL_METHOD=0',
              '--template={file}:{line}:{severity}:{id}:{message}'] + rel, check=False)
     tidy_checks = ('-*,clang-analyzer-*,bugprone-*,cert-*,misc-*,portability-*,performance-*,'
                    'readability-*,-readability-magic-numbers,-readability-identifier-length')
     ct = sh(['clang-tidy', '--quiet', '-checks=' + tidy_checks] + rel
-            + ['--', '-std=c99', '-Isrc', '-ffp-contract=off'], check=False)
+            + ['--', '-std=c99', *INCS, '-ffp-contract=off'], check=False)
     open(os.path.join(raw, 'cppcheck.txt'), 'w').write(cp.stderr)
     open(os.path.join(raw, 'clang-tidy.txt'), 'w').write(ct.stdout)
     findings = []
@@ -502,7 +504,7 @@ def md(pack):
     if pack['problems']:
         L += ['Problems:', ''] + ['- ' + p for p in pack['problems']] + ['']
     L += ['## 1. Claims: every public function\'s contract', '',
-          'Formal text: the ACSL contract on the prototype (src/cbx_api.h, src/certbox.h), proven by '
+          'Formal text: the ACSL contract on the prototype (include/cbx_api.h, include/certbox.h), proven by '
           'Frama-C/WP (section 2). The binary32 function has the same contract with float types, the '
           'names of its logic ending in _f and binary32\'s constants (u = 2^-24, eta = 2^-149, domain '
           '2^122 where binary64 has 2^1018, tightness 2^-140 for 2^-1065).', '']

@@ -17,7 +17,7 @@
 # skipped), copied to its scratch corpus; inputs up to 4096 bytes.
 #
 # Each harness (tests/fuzz/fuzz_<name>.c) is built with clang
-# -fsanitize=fuzzer,address,undefined, linking the library sources src/*.c
+# -fsanitize=fuzzer,address,undefined, linking the library sources src/*/*.c
 # directly and tests/exact_util.c, into build/fuzz/; its seed corpus
 # (tests/fuzz/corpus/<name>/, written by tests/fuzz/make_corpus.c) is copied
 # to the scratch directory build/fuzz/run/<name>/corpus, which the run then
@@ -121,15 +121,15 @@ for h in $HARNESSES; do
         fi
         echo "fuzz: building $B/fuzz_$h" >&2
         # shellcheck disable=SC2046,SC2086
-        $NICE "$CLANG" $CFLAGS -DCBX_GLTF $(pkg-config --cflags jansson) -Isrc -Itools/certbox -Itests \
-            tests/fuzz/fuzz_gltf.c tests/gltf_oracle.c tools/certbox/gltf.c src/*.c \
+        $NICE "$CLANG" $CFLAGS -DCBX_GLTF $(pkg-config --cflags jansson) $(sh scripts/incs.sh) -Itools/certbox -Itests \
+            tests/fuzz/fuzz_gltf.c tests/gltf_oracle.c tools/certbox/gltf.c src/*/*.c \
             $(pkg-config --libs jansson) -lgmp -lm -o "$B/fuzz_$h" \
             || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
         continue
     fi
     echo "fuzz: building $B/fuzz_$h" >&2
     # shellcheck disable=SC2086
-    $NICE "$CLANG" $CFLAGS -Isrc -Itests "tests/fuzz/fuzz_$h.c" src/*.c tests/exact_util.c \
+    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" src/*/*.c tests/exact_util.c \
         -lmpfr -lgmp -lm -o "$B/fuzz_$h" || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
 done
 

@@ -18,7 +18,7 @@ mkdir -p $B
 pass=0; fail=0
 ok() { pass=$((pass + 1)); echo "ieee: ok   $*"; }
 ko() { fail=$((fail + 1)); echo "ieee: FAIL $*"; }
-FLAGS="-std=c99 -Wall -Wextra -Wpedantic -Werror -O2 -Isrc"
+FLAGS="-std=c99 -Wall -Wextra -Wpedantic -Werror -O2 $(sh scripts/incs.sh)"
 $CC $FLAGS -ffp-contract=off tests/test_ieee.c build/libcertbox.a -lm -o $B/test_ieee
 run() { # name expect mode
   if ./$B/test_ieee "$3" "$2" > $B/out.txt; then ok "$1: $(head -1 $B/out.txt | sed 's/^test_ieee: //')"
@@ -37,7 +37,7 @@ run "rounding toward zero" 0x08 zero
 # 2. the check's sources built with bad flags
 variant() { # name expect flags...
   name=$1; expect=$2; shift 2
-  if $CC $FLAGS "$@" -c src/cbx_ieee.c -o $B/v1.o && $CC $FLAGS "$@" -c src/cbx_ieee_f.c -o $B/v2.o \
+  if $CC $FLAGS "$@" -c src/core/cbx_ieee.c -o $B/v1.o && $CC $FLAGS "$@" -c src/f32/cbx_ieee_f.c -o $B/v2.o \
      && $CC $FLAGS -ffp-contract=off tests/test_ieee.c $B/v1.o $B/v2.o build/libcertbox.a -lm -o $B/test_v; then
     if ./$B/test_v plain "$expect" > $B/out.txt; then ok "$name: $(head -1 $B/out.txt | sed 's/.*: //')"
     else ko "$name: $(head -1 $B/out.txt)"; fi
@@ -62,7 +62,7 @@ variant "fma-free build (CBX_NO_FMA: Dekker's product) passes" 0 -DCBX_NO_FMA
 refused() { # name flags...
   name=$1; shift
   n=0; r=0
-  for f in src/cbx_*.c; do
+  for f in src/*/cbx_*.c; do
     n=$((n + 1))
     if $CC $FLAGS "$@" -c "$f" -o $B/r.o 2> $B/err.txt; then :; else
       grep -q 'certbox:' $B/err.txt && r=$((r + 1)); fi

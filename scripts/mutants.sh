@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# Mutation check: do the fast exact tests catch deliberate faults in src/ (and tools/)?
+# Mutation check: do the fast exact tests catch deliberate faults in src/, include/ (and tools/)?
 #
 #   bash scripts/mutants.sh [ID...]      (no ID: every mutant of the list)
 #
-# The checkout's src/, specs/, tests/, examples/, tools/ and Makefile (never .git or
+# The checkout's include/, src/, specs/, tests/, examples/, tools/ and Makefile (never .git or
 # build/) are copied into a scratch directory (mktemp -d).  specs/ is copied
 # because the Makefile lists specs/cbx_spec.h among the library's
 # prerequisites; nothing under specs/ is ever mutated.  The pristine copy is
 # built and tested once (it must pass); then, for each mutant of
 # scripts/mutants.txt, a copy of that baseline (build/ included, timestamps
 # kept, so only what the fault touches is rebuilt) gets ONE fault applied to
-# a file under src/ (exact search string, which must match exactly once, or
+# a file under src/, include/ or tools/ (exact search string, which must match exactly once, or
 # the run stops), is built, and runs the fast exact tests with reduced case
 # counts.  A non-zero exit of a test (or a crash or timeout) means CAUGHT; a
 # mutant that does not build is a BAD MUTANT (reported, exit 2).
@@ -94,8 +94,8 @@ def parse(path):
     dup = sorted(set(i for i in ids if ids.count(i) > 1))
     if dup: sys.exit("mutants.txt: duplicate ids: %s" % ', '.join(dup))
     for m in muts:
-        if not m['file'].startswith(('src/', 'tools/')) or '..' in m['file']:
-            sys.exit("mutant %s: file %s is not under src/ or tools/" % (m['id'], m['file']))
+        if not m['file'].startswith(('src/', 'include/', 'tools/')) or '..' in m['file']:
+            sys.exit("mutant %s: file %s is not under src/, include/ or tools/" % (m['id'], m['file']))
         if m['find'] == m['repl'] or not m['find']:
             sys.exit("mutant %s: empty search string or replacement equal to it (no-op)" % m['id'])
     return muts
@@ -150,7 +150,7 @@ fi
 trap 'exit 130' INT TERM
 BASE=$SCR/base
 mkdir -p "$BASE"
-for d in src specs tests examples tools; do
+for d in include src specs tests examples tools; do
     [ -d "$ROOT/$d" ] || die "$ROOT/$d missing"
     cp -pR "$ROOT/$d" "$BASE/$d"
 done

@@ -40,40 +40,40 @@ case_() {
 }
 # the cases run at once (one prover process each); verdicts in order below
 # 1. box -> cbox: the half-width doubled (still contains the box)
-case_ b2c-half-doubled src/cbx_convert.c b2c proofs/all.c hup,thi,tlo,tight 'tight\|hup\|thi\|tlo' \
+case_ b2c-half-doubled src/algo/cbx_convert.c b2c proofs/all.c hup,thi,tlo,tight 'tight\|hup\|thi\|tlo' \
   "    r.b = cbx_add_rn(f, CBX_K(ETA16));" \
   "    r.b = cbx_add_rn(cbx_add_rn(f, f), CBX_K(ETA16));" &
 # 2. cbox -> box: the lower end at c - 2h (binary32 family)
-case_ c2b-lo-widened src/cbx_endpoints.h cbx_c2b proofs/all_f.c s2,e2,p2,f2,ta,tb,tight 'tight\|_s2\|_e2\|_ta\|_tb' \
+case_ c2b-lo-widened src/core/cbx_endpoints.h cbx_c2b proofs/all_f.c s2,e2,p2,f2,ta,tb,tight 'tight\|_s2\|_e2\|_ta\|_tb' \
   "    cbx_fp s = cbx_sub_rn(c, h);" \
   "    cbx_fp s = cbx_sub_rn(cbx_sub_rn(c, h), h);" &
 # 3. the transform's kernel: the lower end widened twice
-case_ kernel-lo-widened-twice src/cbx_kernel.h cbx_end_lo proofs/all.c tight tight \
+case_ kernel-lo-widened-twice src/algo/cbx_kernel.h cbx_end_lo proofs/all.c tight tight \
   "    return cbx_sub_rn(s, w);" \
   "    return cbx_sub_rn(cbx_sub_rn(s, w), w);" &
 # 4. the interval-matrix kernel: the lower end widened twice
-case_ imat-lo-widened-twice src/cbx_ikernel.h cbx_irow proofs/imat.c tight tight \
+case_ imat-lo-widened-twice src/f64/cbx_ikernel.h cbx_irow proofs/imat.c tight tight \
   "    r.lo = cbx_sub_rn(slo, w);" \
   "    r.lo = cbx_sub_rn(cbx_sub_rn(slo, w), w);" &
 # 5. the interval-matrix kernel: the upper end not widened (unsound: the
 #    containment postcondition must fail, not only the tightness one)
-case_ imat-hi-not-widened src/cbx_ikernel.h cbx_irow proofs/imat.c sound sound \
+case_ imat-hi-not-widened src/f64/cbx_ikernel.h cbx_irow proofs/imat.c sound sound \
   "    r.hi = cbx_add_rn(shi, w);" \
   "    r.hi = cbx_add_rn(shi, CBX_C(0.0));" &
 # 6. motion: a full axis's lower end at most -1 (sound: below both ends'
 #    lower ends, but loose wherever the exact end is above -1)
-case_ motion-lo-loose src/cbx_motion.c mot_axis_union proofs/all.c tight tight \
+case_ motion-lo-loose src/f64/cbx_motion.c mot_axis_union proofs/all.c tight tight \
   "        r.lo = cbx_min2(r0, r1);" \
   "        r.lo = cbx_min2(cbx_min2(r0, r1), -1.0);" - &
 # 7. motion: a full axis (a bounded image) given as the whole line with
 #    CBX_OK (the containment postcondition holds; the finite ends it
 #    promises for full rows must fail)
-case_ motion-full-whole src/cbx_motion.c mot_axis_union proofs/all.c sound sound \
+case_ motion-full-whole src/f64/cbx_motion.c mot_axis_union proofs/all.c sound sound \
   "        r.lo = cbx_min2(r0, r1);" \
   "        r.lo = cbx_ninf();" - &
 # 8. the sphere: the radius doubled (still contains the ball; the
 #    tightness postcondition, ball_tight, must fail)
-case_ sphere-radius-doubled src/cbx_sphere.c ball_axis_bounds proofs/all.c lh,rn,g,ta,tb,tight 'tight\|_ta\|_tb\|_g' \
+case_ sphere-radius-doubled src/algo/cbx_sphere.c ball_axis_bounds proofs/all.c lh,rn,g,ta,tb,tight 'tight\|_ta\|_tb\|_g' \
   "    conv_res lh = cbx_c2b(t, r);" \
   "    conv_res lh = cbx_c2b(t, cbx_add_rn(r, r));" - &
 wait

@@ -31,13 +31,13 @@ case_() {
   fi
 }
 # 1. a precondition that contradicts itself
-case_ requires-range src/cbx_round.h cbx_widening proofs/all.c \
+case_ requires-range src/core/cbx_round.h cbx_widening proofs/all.c \
   "    requires rt: -CBX_RT <= t <= CBX_RT;
     requires r0: 0 <= g0" \
   "    requires rt: -CBX_RT <= t <= CBX_RT && t >= 2 * CBX_RT;
     requires r0: 0 <= g0"
 # 2. a precondition inconsistent only through a lemma (in_dom, dom_pair)
-case_ requires-lemma src/cbx_kernel.h cbx_axis proofs/all_f.c \
+case_ requires-lemma src/algo/cbx_kernel.h cbx_axis proofs/all_f.c \
   "    requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \\nothing;
     ensures fin: \\is_finite(\\result.lo) && \\is_finite(\\result.hi);" \
@@ -47,7 +47,7 @@ case_ requires-lemma src/cbx_kernel.h cbx_axis proofs/all_f.c \
     ensures fin: \\is_finite(\\result.lo) && \\is_finite(\\result.hi);"
 # 2b. inconsistent only through a lemma's instance: the class 2^509 x 2^509
 #     implies in_dom (lemma cls_509), which the precondition denies
-case_ requires-via-lemma src/cbx_kernel.h cbx_column proofs/all.c \
+case_ requires-via-lemma src/algo/cbx_kernel.h cbx_column proofs/all.c \
   "    requires dom: in_dom(m, l) && in_dom(m, h);
     assigns \\nothing;
     ensures fin: \\is_finite(\\result.lo)" \
@@ -55,17 +55,17 @@ case_ requires-via-lemma src/cbx_kernel.h cbx_column proofs/all.c \
     assigns \\nothing;
     ensures fin: \\is_finite(\\result.lo)"
 # 3. a trusted contract whose postcondition is false (every call is then dead)
-case_ trusted-post src/cbx_round.h ball_radius proofs/all.c \
+case_ trusted-post src/core/cbx_round.h ball_radius proofs/all.c \
   "    ensures fin: \\is_finite(\\result) && \\result >= 0;
     ensures up:" \
   "    ensures fin: \\is_finite(\\result) && \\result >= 0 && \\result < 0;
     ensures up:"
 # 4. an inconsistent loop invariant
-case_ loop-invariant src/cbx_batch.c batch proofs/all.c \
+case_ loop-invariant src/algo/cbx_batch.c batch proofs/all.c \
   "    /*@ loop invariant rng: 0 <= k <= n;" \
   "    /*@ loop invariant rng: 0 <= k <= n && k > n;"
 # 5. a behavior that no input can take, and code only it reaches
-case_ dead-branch src/cbx_vertex.h vertex_lo proofs/all.c \
+case_ dead-branch src/algo/cbx_vertex.h vertex_lo proofs/all.c \
   "    if (m > CBX_C(0.0)) {
         /*@ assert sg: m > 0; */
         r.v = l;" \

@@ -1,5 +1,5 @@
 /*
- * ACSL logic of the sphere and ellipsoid bounds (src/cbx_sphere.c) that
+ * ACSL logic of the sphere and ellipsoid bounds (src/algo/cbx_sphere.c) that
  * does not depend on the floating-point format: unit ball, Cauchy-Schwarz
  * chain (over the reals).  The domains and the row rescaling of each format
  * are in specs/cbx_spec.h.  certbox.h includes this file once.
@@ -82,7 +82,7 @@
 
     // The exact row norm |b| = sqrt(b.b) (the exact half-width of axis i):
     // the tightness statements (specs/cbx_spec.h, ball_tight) compare the
-    // ends with it; the lemmas below are what src/cbx_sphere.c uses of it
+    // ends with it; the lemmas below are what src/algo/cbx_sphere.c uses of it
     // (proven in pass L: in WP's float context CVC4 does not even find
     // |x| |x| = x x).
     logic real rnorm3(real a0, real a1, real a2) = \sqrt(nrm3(a0, a1, a2));

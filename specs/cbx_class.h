@@ -1,6 +1,6 @@
 /*
- * ACSL logic of the transform classes and of motion (src/cbx_class.c,
- * src/cbx_motion.c).  Read by Frama-C only.
+ * ACSL logic of the transform classes and of motion (src/f64/cbx_class.c,
+ * src/f64/cbx_motion.c).  Read by Frama-C only.
  */
 #ifndef CBX_CLASS_SPEC_H
 #define CBX_CLASS_SPEC_H

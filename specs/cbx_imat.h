@@ -1,5 +1,5 @@
 /*
- * ACSL logic of interval matrices (src/cbx_imat.c): an affine map whose
+ * ACSL logic of interval matrices (src/f64/cbx_imat.c): an affine map whose
  * every entry is only known to lie in an interval [lo, hi], as a chain of
  * rounded transforms produces (glTF node chains, rotations built from
  * quaternions).  Read by Frama-C only; certbox.h includes it in the

@@ -86,7 +86,7 @@
       m0*v0 >= m0*p0 ==> m1*v1 >= m1*p1 ==> m2*v2 >= m2*p2 ==>
       r >= m0*p0 + m1*p1 + m2*p2 + t;
     // The one nonlinear fact of the half-space proof, with a product as
-    // its trigger (the lemma functions of src/cbx_vertex.h use it; a named
+    // its trigger (the lemma functions of src/algo/cbx_vertex.h use it; a named
     // predicate, so that WP's simplifier leaves the product as it is and
     // the lemma has a trigger).
     predicate nn_prod(real a, real b) = 0 <= a*b;
@@ -180,7 +180,7 @@
     complete behaviors; \
     disjoint behaviors;
 
-/* One box of cbx_transform_box returned by value (src/cbx_onebox.h):
+/* One box of cbx_transform_box returned by value (src/algo/cbx_onebox.h):
  * its whole promise restated on the values of *a and *b at Pre. */
 #define CBX_ONE_POST(a, b) \
     ensures done: box_done_m(CBX_AV(a, Pre), CBX_BV(b, Pre), \result.o); \

@@ -4,7 +4,7 @@
  * format-independent ones of specs/cbx_logic.h and specs/cbx_ball.h.
  * Read by Frama-C only: certbox.h includes this file once per format
  * (between cbx_prec_begin.h and cbx_prec_end.h), so that cbx_fp is double
- * or float and every CBX_ constant is that format's (src/cbx_prec_begin.h;
+ * or float and every CBX_ constant is that format's (include/cbx_prec_begin.h;
  * in binary64: u = 2^-53, eta = 2^-1074, CBX_RT = 2^1018; in binary32:
  * u = 2^-24, eta = 2^-149, CBX_RT = 2^122).  The binary32 instance's names
  * end in _f (has_nan_f, ...).  The comments give the binary64 values.
@@ -13,7 +13,7 @@
  * the C variables: `m*l` is the exact product, not the rounded one.
  */
 
-/* Helpers for the list of magnitude classes (src/cbx_prec_begin.h). */
+/* Helpers for the list of magnitude classes (include/cbx_prec_begin.h). */
 #define CBX_CLS_P(tag, bm, bc) cls(m, c, bm, bc)
 #define CBX_CLS_OR(tag, bm, bc) || cls(m, c, bm, bc)
 #define CBX_CLS_LEMMA(tag, bm, bc) \
@@ -452,7 +452,7 @@
 */
 
 /*@ // ---------------------------------------------------------------------
-    // Spheres and ellipsoids (src/cbx_sphere.c); the format-independent
+    // Spheres and ellipsoids (src/algo/cbx_sphere.c); the format-independent
     // Cauchy-Schwarz chain is specs/cbx_ball.h.
     // Scaling a row by 2^600 scales its norm by 2^600 (row_radius; CBX_SUP,
     // 2^90 in binary32).

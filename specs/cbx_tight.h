@@ -1,5 +1,5 @@
 /*
- * ACSL logic of the tight mode (src/cbx_tight.c): a vector of eight
+ * ACSL logic of the tight mode (src/f64/cbx_tight.c): a vector of eight
  * doubles whose exact real sum is what the certification tracks.
  */
 #ifndef CBX_TIGHT_SPEC_H

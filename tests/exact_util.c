@@ -14,7 +14,7 @@ const int xu_class_k[XU_NCLASS] = {
     576, 640, 704, 768, 832, 896, 960, 1018
 };
 
-/* The two formats (src/cbx_prec_begin.h has the library's side). */
+/* The two formats (include/cbx_prec_begin.h has the library's side). */
 const xu_format xu_binary64 = {
     "binary64", 53, 1074, 1018, 1065, 1000, 1023, -1022, 200, 900,
     { 509, 0, 64, 128, 192, 256, 320, 384, 448, 512,

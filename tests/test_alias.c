@@ -1,6 +1,6 @@
 /*
  * test_alias [N] [seed]: in-place use (out == in) of cbx_transform_box and
- * cbx_transform_cbox, which their contracts allow (src/certbox.h; proven:
+ * cbx_transform_cbox, which their contracts allow (include/certbox.h; proven:
  * the postconditions read the inputs at Pre).
  *
  * For N random cases each (default 100000; special values, empty boxes and

@@ -1,6 +1,6 @@
 /*
  * test_eft [N_THOUSANDS] [seed]: the tight mode's error-free products
- * (src/cbx_eft.h) against each other and against GMP.
+ * (src/core/cbx_eft.h) against each other and against GMP.
  *
  * For every pair (a, b) in two_prod's contract (finite, |a*b| <= 2^1018,
  * a*b == 0 or |a*b| >= 2^-969, decided exactly with mpq_t):
@@ -19,7 +19,7 @@
  *   3  products within a factor 2^8 of 2^-969, a subnormal factor on a
  *      quarter of them;
  *   4  short mantissas (exact products, lo == 0) and ties.
- * Then the hard-case tables of cbx_ieee_check() (src/cbx_ieee_cases.h)
+ * Then the hard-case tables of cbx_ieee_check() (src/core/cbx_ieee_cases.h)
  * are recomputed: fma and sqrt with MPFR (binary64 / binary32 exponent
  * range, subnormalized), the two_prod / two_sum rows with mpq_t.
  * Prints the counts; the last line is "N passed, M failed".
@@ -297,7 +297,7 @@ int main(int argc, char **argv)
     printf("test_eft: of them %ld through the Dekker form's scaled path (a factor above 2^995), "
            "%ld with a subnormal factor, %ld with lo == 0\n", k.scaled, k.subn, k.zero_lo);
     tbad = tables(&k, &tn);
-    printf("test_eft: cbx_ieee_check's hard-case tables (src/cbx_ieee_cases.h): %ld rows recomputed "
+    printf("test_eft: cbx_ieee_check's hard-case tables (src/core/cbx_ieee_cases.h): %ld rows recomputed "
            "with MPFR / GMP, %ld wrong\n", tn, tbad);
     printf("  CPU time %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
     mpfr_clear(k.r);

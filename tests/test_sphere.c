@@ -21,7 +21,7 @@
  *     sqrt(s) cancel): in ulps of the exact end, and in units of
  *     u*(|t| + sqrt(s)) + eta (u = 2^-53, eta = 2^-1074); the sanity bound
  *     (documented floor: an end may be up to 2^-1064 out, the absolute terms
- *     of src/cbx_sphere.c; a gap must exceed both 64 units and 2^-1064 to fail)
+ *     of src/algo/cbx_sphere.c; a gap must exceed both 64 units and 2^-1064 to fail)
  *     (check "sanity<=64") fails an end more than 64 units out on axes with
  *     u*(|t| + sqrt(s)) >= 2^-1000; on the other axes (check "tiny-abs")
  *     an end fails when its gap is above both 64 units and 2^-1000;

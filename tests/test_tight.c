@@ -984,7 +984,7 @@ int main(int argc, char **argv)
     }
     sec_print(&tot);
     printf("\n  CPU time %.2f s\n", (double)(clock() - t0) / CLOCKS_PER_SEC);
-    printf("tight: two_prod form (src/cbx_eft.h, as this test's flags select it): %s\n",
+    printf("tight: two_prod form (src/core/cbx_eft.h, as this test's flags select it): %s\n",
            CBX_TWO_PROD_NAME);
     printf("tight: %ld cases, %ld finite ends, %ld containment failures, %ld optimality "
            "failures, %ld ends in the exception\n", tot.cases, tot.fin, tot.fail[C_CONTAIN],

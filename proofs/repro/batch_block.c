@@ -1,7 +1,7 @@
 /*
  * NOT BUILT, NOT PROVEN AS A WHOLE: the vectorised batch of issue 17, as it
  * stood when the session ran out of proof time (kept as a reproducer and a
- * starting point; src/cbx_batch.c is the proven per-box loop).
+ * starting point; src/algo/cbx_batch.c is the proven per-box loop).
  *
  * What it does: under a general map of the fast range, 8 boxes at a time
  * are copied into six local arrays (structure of arrays), the kernel runs
@@ -87,7 +87,7 @@ static void put_box(cbx_box *out, size_t k, size_t n, cbx_box o)
 /* ---- the vectorised block ----------------------------------------------
  * Under a map of the fast range, CBX_LANES boxes of the fast range at a
  * time: the boxes are copied into one array per end (structure of arrays),
- * the kernel (src/cbx_fast.h) runs on them in a loop with a constant trip
+ * the kernel (src/algo/cbx_fast.h) runs on them in a loop with a constant trip
  * count and no branch, which compilers vectorise (gcc -O2: 16-byte vectors;
  * -fopt-info-vec shows it), and the ends are written back box by box.  The
  * same operations in the same order as cbx_transform_box: the same bits. */

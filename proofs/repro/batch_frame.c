@@ -1,7 +1,7 @@
 /* Reproducer (see proofs/README.md, "How the batch proof is split"): with
  * the six fields of out[j] as separate arguments of the invariant's
  * predicate, its preservation times out with CVC4 1.8 and Z3 4.8.12 here;
- * src/cbx_batch.c passes out[j] as one struct value instead.
+ * src/algo/cbx_batch.c passes out[j] as one struct value instead.
  *   WHY3CONFIG=build/proof/why3.conf frama-c -wp -wp-rte -wp-prover cvc4r,z3r proofs/repro/batch_frame.c */
 typedef struct B { double lo[3], hi[3]; } B;
 /*@ axiomatic A { predicate P(real x, real y, real z, real u, real v, real w); } */

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""The public contracts of certbox, read from the headers (src/cbx_api.h for
-both families, src/certbox.h for the binary64-only functions), split into
+"""The public contracts of certbox, read from the headers (include/cbx_api.h for
+both families, include/certbox.h for the binary64-only functions), split into
 clauses.  Used by scripts/evidence.py; run alone it lists every clause key.
 
 A clause key is BEHAVIOR/KIND/LABEL: the behavior ('-' outside any), the
@@ -42,7 +42,7 @@ def functions():
     """[(name, family, doc comment, contract text, prototype)]"""
     out = []
     for fname, fam in (('cbx_api.h', 'both'), ('certbox.h', '64')):
-        text = open(os.path.join(ROOT, 'src', fname), encoding='utf-8').read()
+        text = open(os.path.join(ROOT, 'include', fname), encoding='utf-8').read()
         for m in re.finditer(r'((?:/\*(?!@)(?:[^*]|\*(?!/))*\*/\s*)*)/\*@(.*?)\*/\s*\n'
                              r'((?:cbx_status|cbx_class|unsigned|void|const char \*)\s+(cbx_\w+)\((?:[^;])*\);)',
                              text, re.S):

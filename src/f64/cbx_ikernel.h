@@ -3,14 +3,14 @@
  * output coordinate
  *     [tl, th] + [ml0, mh0] [l0, h0] + [ml1, mh1] [l1, h1] + [ml2, mh2] [l2, h2]
  * outward rounded (specs/cbx_imat.h: irow_lo, irow_hi).  The same design as
- * src/cbx_kernel.h, of which it reuses the column (cbx_column, two products
+ * src/algo/cbx_kernel.h, of which it reuses the column (cbx_column, two products
  * each) and the widening: a term's four corner products are the two
  * columns of ml and mh; its smaller end is the smaller of their smaller
  * ends, its magnitude the larger magnitude.  Each end is the rounded sum
  * moved out once by w = 5.5 u R + eta_128 (R = max(|tl|, |th|) + the
  * computed magnitudes), which pays for every rounding: within 12 u S +
  * 2^-1065 of the exact end.  Branch-free.  Written once for both formats
- * (today instantiated for binary64: src/cbx_imat.c).
+ * (today instantiated for binary64: src/f64/cbx_imat.c).
  */
 #ifndef CBX_IKERNEL_H
 #define CBX_IKERNEL_H

@@ -1,7 +1,7 @@
 /*
  * The precision of this translation unit: binary32 when CBX_FLOAT is
  * defined before the first include (the *_f.c files), binary64 otherwise.
- * Opens that instance of src/cbx_prec_begin.h for the rest of the unit, so
+ * Opens that instance of include/cbx_prec_begin.h for the rest of the unit, so
  * the algorithm's sources (written once) read cbx_fp, CBX_K(...) and the
  * logic names in the unit's format.
  */

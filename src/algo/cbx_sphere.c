@@ -317,7 +317,7 @@ static ball_res sphere_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
     return e;
 }
 
-/* contract: src/certbox.h */
+/* contract: include/certbox.h */
 cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
 {
     if (aff_any_nan(a)) {
@@ -435,7 +435,7 @@ static ball_res ellipsoid_axis(cbx_fp r0, cbx_fp r1, cbx_fp r2,
     return e;
 }
 
-/* contract: src/certbox.h */
+/* contract: include/certbox.h */
 cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
                              const cbx_fp rot[3][3], cbx_box *out)
 {

@@ -21,7 +21,7 @@ static inline int cbx_cls(cbx_fp m, cbx_fp c, cbx_fp bm, cbx_fp bc)
 }
 
 /* Run-time check of one product's domain class (specs: dom_pair), the
- * classes of src/cbx_prec_begin.h in order.  The common class (both
+ * classes of include/cbx_prec_begin.h in order.  The common class (both
  * factors at most 2^509; 2^61 in binary32) comes first, and the first
  * class that holds ends the search: an or of all 18 (no branch, fewer
  * proof paths) made the careful paths that check every pair 7x slower

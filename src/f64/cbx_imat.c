@@ -4,7 +4,7 @@
  * quaternion produces.  cbx_transform_box_imat bounds the image of a box
  * under every map of the interval matrix; cbx_imat_compose encloses every
  * product of two such maps.  Both run the proven kernel of
- * src/cbx_ikernel.h on every output coordinate whose inputs are in the
+ * src/f64/cbx_ikernel.h on every output coordinate whose inputs are in the
  * fast range (ordered finite intervals, linear entries and box ends at
  * most 2^509, translations at most 2^1018), and set the others to the
  * whole line with CBX_ERANGE.  Binary64.
@@ -20,7 +20,7 @@ typedef struct cbx_icoord { cbx_fp lo, hi; int ok; } cbx_icoord;
 
 /* 1 when [l, h] is ordered, finite and within [nb, b] (IEEE comparisons:
  * false on NaN).  The bounds come as two literals (nb = -b): a negated
- * parameter made Why3 reject the goals (as in src/cbx_fast.h). */
+ * parameter made Why3 reject the goals (as in src/algo/cbx_fast.h). */
 /*@ requires \is_finite(nb) && \is_finite(b) && nb == -b;
     assigns \nothing;
     ensures rng: 0 <= \result <= 1;

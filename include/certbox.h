@@ -348,8 +348,8 @@ cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out)
  * the failed checks.  It also checks what the proofs trust: sqrt and sqrtf
  * correctly rounded, the error-free transformations of the tight mode exact
  * (cbx_two_sum, cbx_two_prod in the form this build selected: fma or
- * Dekker, src/cbx_eft.h) and, where two_prod calls it, fma correctly
- * rounded: all on hard cases (src/cbx_ieee_cases.h).  Call it once at
+ * Dekker, src/core/cbx_eft.h) and, where two_prod calls it, fma correctly
+ * rounded: all on hard cases (src/core/cbx_ieee_cases.h).  Call it once at
  * start-up (a power-on self-test); make check runs it.  Not part of the
  * proven set: it tests the build.  No allocation, no state. */
 #define CBX_IEEE_CONTRACT 0x01u /* a*b + c fused into an FMA (-ffp-contract=fast) */

@@ -2,8 +2,8 @@
  * Arvo's interval form (Graphics Gems I, "Transforming Axis-Aligned
  * Bounding Boxes", Fig. 1), outward rounded: cbx_transform_box.
  *
- * The fast range (one check per map, one per box; src/cbx_fast.h) goes
- * straight to the branch-free kernel (src/cbx_kernel.h: per axis, the
+ * The fast range (one check per map, one per box; src/algo/cbx_fast.h) goes
+ * straight to the branch-free kernel (src/algo/cbx_kernel.h: per axis, the
  * round-to-nearest sums of Arvo's form widened once by 5.5 u R + 2^-1067).
  * Everything else takes the careful path below, axis by axis: the same
  * kernel on a full row, each end from its vertex on a half-space or
@@ -159,7 +159,7 @@ static int any_nan(const cbx_affine *a, const cbx_box *in)
 }
 
 /* One check per map and per box: the branch-free kernel on the fast range
- * (src/cbx_fast.h); otherwise the careful path: NaN, empty, then axis by
+ * (src/algo/cbx_fast.h); otherwise the careful path: NaN, empty, then axis by
  * axis (the same kernel on a full row, each end from its vertex on a
  * half-space or out-of-domain row, the whole line on an infinite entry). */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)

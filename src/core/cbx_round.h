@@ -12,7 +12,7 @@
  * Error bounds (round-to-nearest, no overflow; binary64: u = 2^-53,
  * eta = 2^-1074; binary32: u = 2^-24, eta = 2^-149):
  *   |RN(z) - z| <= u |z| + eta/2 <= u |z| + eta
- * Written once for both formats (src/cbx_prec_begin.h: cbx_fp, CBX_K).
+ * Written once for both formats (include/cbx_prec_begin.h: cbx_fp, CBX_K).
  */
 #ifndef CBX_ROUND_H
 #define CBX_ROUND_H

@@ -1,11 +1,11 @@
 /*
  * The fast path of the interval transform, both formats: one range check
  * per map (cbx_map_fast) and one per box (cbx_box_fast), then the
- * branch-free kernel of src/cbx_kernel.h on every axis.  Inside the fast
+ * branch-free kernel of src/algo/cbx_kernel.h on every axis.  Inside the fast
  * range (every linear entry and box end at most 2^509 in magnitude, every
  * translation at most 2^1018; binary32: 2^61 and 2^122) every pair lies in
  * the first magnitude class, so every row is full and the kernel's output
- * is exactly what the careful path (src/cbx_interval.c) computes for it,
+ * is exactly what the careful path (src/algo/cbx_interval.c) computes for it,
  * with CBX_OK.  The checks are IEEE comparisons, false on NaN and
  * infinities: such inputs, inverted boxes and larger magnitudes fail them
  * and take the careful path.

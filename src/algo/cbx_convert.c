@@ -70,7 +70,7 @@ static void cwhole_set(cbx_cbox *out, int i)
 
 /* The input checks, each one predicate of the contract (one call in the
  * public functions keeps their goals small; box_any_nan, box_any_empty:
- * src/cbx_domain.h). */
+ * src/core/cbx_domain.h). */
 
 /*@ requires \valid_read(in);
     assigns \nothing;

@@ -1,7 +1,7 @@
 /*
  * The precision of the code that follows: binary64 (CBX_INST == 64) or
  * binary32 (CBX_INST == 32).  The algorithms are written once, for
- * double (src/cbx_interval.c, ...); a binary32 translation unit includes
+ * double (src/algo/cbx_interval.c, ...); a binary32 translation unit includes
  * the same text with the type, the constants and the public and logic names
  * below mapped to the float family.  No include guard: certbox.h opens
  * and closes one instance per precision (cbx_prec_end.h undoes this file).

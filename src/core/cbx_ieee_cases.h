@@ -1,5 +1,5 @@
 /*
- * Hard cases of the build check's fma, sqrt and EFT tests (src/cbx_ieee.c),
+ * Hard cases of the build check's fma, sqrt and EFT tests (src/core/cbx_ieee.c),
  * as data: inputs and the IEEE-754 result, exact hexadecimal literals.
  * Found offline with exact rational arithmetic; tests/test_eft.c checks
  * every row again with MPFR (correctly rounded, binary64/binary32 range

@@ -11,7 +11,7 @@
  * the certificate distils the eight terms (E's seven, and -c) with two_sum,
  * which keeps their exact sum, until the largest term decides the sign.
  * So containment rests on the proven kernel and on the exactness of
- * two_sum / two_prod (src/cbx_eft.h); optimality (c = RD(E)) is what the
+ * two_sum / two_prod (src/core/cbx_eft.h); optimality (c = RD(E)) is what the
  * GMP tests check on every case.  When the certificate cannot decide (some
  * nonzero product below 2^-968, magnitudes above 2^1015) the kernel's end
  * stays: sound, within its proven bound.
