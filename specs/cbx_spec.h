@@ -235,8 +235,9 @@
     // entry and every box end at most CBX_SB (2^509; binary32 2^61) in
     // magnitude, every box axis ordered, every translation at most CBX_RT.
     // Every pair then lies in the first magnitude class: the row is full.
-    // map_fast on the twelve values (the batch loop carries it on the
-    // values read at entry, which no write to out can change).
+    // map_fast_v is the check on the twelve values (the batch loop carries
+    // it on the values read at entry, which no write to out can change);
+    // map_fast is map_fast_v of the map's entries.
     predicate map_fast_v(cbx_fp a00, cbx_fp a01, cbx_fp a02, cbx_fp a03, cbx_fp a10, cbx_fp a11, cbx_fp a12, cbx_fp a13,
                          cbx_fp a20, cbx_fp a21, cbx_fp a22, cbx_fp a23) =
          -CBX_SB <= a00 <= CBX_SB && -CBX_SB <= a01 <= CBX_SB && -CBX_SB <= a02 <= CBX_SB && -CBX_RT <= a03 <= CBX_RT
@@ -245,17 +246,7 @@
       && \is_finite(a00) && \is_finite(a01) && \is_finite(a02) && \is_finite(a03)
       && \is_finite(a10) && \is_finite(a11) && \is_finite(a12) && \is_finite(a13)
       && \is_finite(a20) && \is_finite(a21) && \is_finite(a22) && \is_finite(a23);
-    predicate map_fast(cbx_affine *a) =
-         -CBX_SB <= a->m[0][0] <= CBX_SB && -CBX_SB <= a->m[0][1] <= CBX_SB
-      && -CBX_SB <= a->m[0][2] <= CBX_SB && -CBX_RT <= a->m[0][3] <= CBX_RT
-      && -CBX_SB <= a->m[1][0] <= CBX_SB && -CBX_SB <= a->m[1][1] <= CBX_SB
-      && -CBX_SB <= a->m[1][2] <= CBX_SB && -CBX_RT <= a->m[1][3] <= CBX_RT
-      && -CBX_SB <= a->m[2][0] <= CBX_SB && -CBX_SB <= a->m[2][1] <= CBX_SB
-      && -CBX_SB <= a->m[2][2] <= CBX_SB && -CBX_RT <= a->m[2][3] <= CBX_RT
-      && \is_finite(a->m[0][0]) && \is_finite(a->m[0][1]) && \is_finite(a->m[0][2])
-      && \is_finite(a->m[0][3]) && \is_finite(a->m[1][0]) && \is_finite(a->m[1][1])
-      && \is_finite(a->m[1][2]) && \is_finite(a->m[1][3]) && \is_finite(a->m[2][0])
-      && \is_finite(a->m[2][1]) && \is_finite(a->m[2][2]) && \is_finite(a->m[2][3]);
+    predicate map_fast{L}(cbx_affine *a) = map_fast_v(CBX_AV(a, L));
     predicate box_fast(cbx_box *b) =
          -CBX_SB <= b->lo[0] && b->lo[0] <= b->hi[0] && b->hi[0] <= CBX_SB
       && -CBX_SB <= b->lo[1] && b->lo[1] <= b->hi[1] && b->hi[1] <= CBX_SB
