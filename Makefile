@@ -391,7 +391,7 @@ clean:
 #                   to cbx_transform_box(f)'s, or a certbox output that differs
 #                   between the two builds); no plot unless gnuplot is already
 #                   installed
-# Two builds of tests/bench.c, each against the library compiled with the
+# Two builds of bench/bench.c, each against the library compiled with the
 # same flags, run one after the other and merged by scripts/bench_table.py
 # into one table, one column group per build:
 #   build/bench         the library's flags (ALLCFLAGS: -std=c99 -ffp-contract=off
@@ -403,7 +403,7 @@ BENCHSMOKEARGS := -n 2000 -r 11 -calls 10000 -exact 2000 -gmp 200 -cache 500 -bi
 BENCHNATIVE    := -O3 -march=native
 NATIVECFLAGS   := -std=c99 $(WARN) $(IEEEFLAGS) $(BENCHNATIVE) $(INC)
 NATIVEOBJ      := $(LIBSRC:src/%.c=$(B)/native/obj/%.o)
-BENCHSRC       := tests/bench.c tests/bench_ref.h $(TESTUTIL) tests/exact_util.h
+BENCHSRC       := bench/bench.c bench/bench_ref.h $(TESTUTIL) tests/exact_util.h
 .PHONY: bench bench-smoke branchfree
 $(foreach f,$(FAMSRC),$(eval $(B)/native/obj/f32/$(f)_f.o: $(call famof,$(f))))
 $(B)/native/obj/%.o: src/%.c $(HEADERS)
@@ -413,10 +413,10 @@ $(B)/native/libcertbox.a: $(NATIVEOBJ)
 	rm -f $@ && ar rcs $@ $^
 $(B)/bench: $(BENCHSRC) $(B)/libcertbox.a
 	$(CC) $(ALLCFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(ALLCFLAGS)"' \
-	  -DBENCH_LABEL='"$(strip $(CFLAGS))"' tests/bench.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+	  -DBENCH_LABEL='"$(strip $(CFLAGS))"' bench/bench.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/bench-native: $(BENCHSRC) $(B)/native/libcertbox.a
 	$(CC) $(NATIVECFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(NATIVECFLAGS)"' \
-	  -DBENCH_LABEL='"$(BENCHNATIVE)"' tests/bench.c $(TESTUTIL) $(B)/native/libcertbox.a -lmpfr -lgmp -lm -o $@
+	  -DBENCH_LABEL='"$(BENCHNATIVE)"' bench/bench.c $(TESTUTIL) $(B)/native/libcertbox.a -lmpfr -lgmp -lm -o $@
 
 # BENCH_RUN(dir, args): both builds, one after the other, then the merged table
 BENCH_RUN = ./$(B)/bench $(2) -o $(1)/O2 && ./$(B)/bench-native $(2) -o $(1)/native && \
@@ -435,12 +435,12 @@ bench-smoke: check-deps-test
 	@sh scripts/bench_plot.sh $(B)/bench-smoke
 	./$(B)/bench_scene $(BENCHSCENESMOKE) -o $(B)/bench-smoke
 
-# The scene tool on big generated scenes (issue 18; tests/bench_scene.c):
+# The scene tool on big generated scenes (issue 18; bench/bench_scene.c):
 # time and peak memory of build/certbox, the scenes written to the output
 # folder and removed after their run (build/bench-out/scene.md)
 BENCHSCENEARGS  := -nodes 1000000 -leaves 1000000
 BENCHSCENESMOKE := -nodes 20000 -leaves 20000
-$(B)/bench_scene: tests/bench_scene.c
+$(B)/bench_scene: bench/bench_scene.c
 	@mkdir -p $(@D)
 	$(CC) $(ALLCFLAGS) -DBENCH_FLAGS='"$(ALLCFLAGS)"' $< -lm -o $@
 

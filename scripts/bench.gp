@@ -1,5 +1,5 @@
 # Time (ns per box) versus max excess over the exact bound, one labelled
-# point per plotted row of tests/bench.c: filled the first build (b1, -O2),
+# point per plotted row of bench/bench.c: filled the first build (b1, -O2),
 # open the second (b2, -O3 -march=native) when there is one.  Usage:
 #   gnuplot -e "datafile='build/bench-out/bench.dat'; outfile='build/bench-out/bench.png'" scripts/bench.gp
 # bench.dat (written by scripts/bench_table.py): one block per row,

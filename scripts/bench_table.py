@@ -3,7 +3,7 @@
 
 Usage: python3 scripts/bench_table.py OUTDIR DIR [DIR ...]
 
-Each DIR holds the bench.tsv written by one build of tests/bench.c (make
+Each DIR holds the bench.tsv written by one build of bench/bench.c (make
 bench: build/bench-out/O2 from build/bench, build/bench-out/native from
 build/bench-native).  Writes OUTDIR/bench.md (printed too): the machine,
 compiler, flags and date, then the main table (every row against its
@@ -50,7 +50,7 @@ def fnum(s):
 
 
 def num(v):
-    """The number format of tests/bench.c."""
+    """The number format of bench/bench.c."""
     if isinstance(v, str):
         v = fnum(v)
     if math.isnan(v):
@@ -123,10 +123,10 @@ def main():
 
     out = []
     w = out.append
-    w("# certbox benchmark (tests/bench.c)\n\n")
+    w("# certbox benchmark (bench/bench.c)\n\n")
     w("- machine: %s, %s cores (/proc/cpuinfo); %s\n" % (m0["machine"], m0["cores"], m0["caches"]))
     w("- compiler: %s (`%s`)\n" % (m0["cc_version"], m0["cc"]))
-    w("- builds (tests/bench.c and the library compiled with the same flags; run one after the "
+    w("- builds (bench/bench.c and the library compiled with the same flags; run one after the "
       "other, one column group each):\n")
     for label, meta, _ in builds:
         w("  - **%s**: `%s`; run %s; load average at its end: %s\n"
@@ -232,7 +232,7 @@ def main():
 
     # bench.dat for scripts/bench.gp
     with open(os.path.join(outdir, "bench.dat"), "w", encoding="utf-8") as f:
-        f.write("# certbox bench (tests/bench.c, scripts/bench_table.py), for scripts/bench.gp: one\n"
+        f.write("# certbox bench (bench/bench.c, scripts/bench_table.py), for scripts/bench.gp: one\n"
                 "# data block per plotted row (blocks separated by two blank lines), each a header\n"
                 "# line (its 6th field is the row's title) and one data line.\n")
         f.write("# machine: %s, %s cores; %s\n" % (m0["machine"], m0["cores"], m0["cc_version"]))

@@ -1,8 +1,8 @@
 /*
- * bench_ref.h: the reference (baseline) algorithms of tests/bench.c.
+ * bench_ref.h: the reference (baseline) algorithms of bench/bench.c.
  * NOT part of the library, and NOT sound: each is the usual textbook or
  * engine code in plain binary64 round-to-nearest, with no widening, so an
- * end may fall a few ulps inside the exact image (tests/bench.c counts
+ * end may fall a few ulps inside the exact image (bench/bench.c counts
  * how often).  They are static inline, as in the header-only libraries
  * they stand for; build them with the library's flags
  * (-std=c99 -ffp-contract=off -fno-fast-math) so that no FMA is formed.

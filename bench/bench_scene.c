@@ -163,7 +163,7 @@ int main(int argc, char **argv)
     if (!md) { perror(out); return 2; }
     char head[2048];
     snprintf(head, sizeof head,
-             "# The scene tool on big scenes (tests/bench_scene.c)\n\n"
+             "# The scene tool on big scenes (bench/bench_scene.c)\n\n"
              "machine: %s, %d cores; date: %s\n"
              "tool: %s (%s), output to /dev/null; time and peak memory of the whole run "
              "(reading, parsing, evaluating, printing)\n\n"

@@ -44,7 +44,7 @@
  * Rows (main table: every row against a classic round-to-nearest Arvo
  * baseline run on the same inputs in the same rounds)
  *   1   naive 8 corners, RN: each corner transformed as a point, min / max
- *       (pbrt, Embree); tests/bench_ref.h ref_naive8.  Against row 2.
+ *       (pbrt, Embree); bench/bench_ref.h ref_naive8.  Against row 2.
  *   2   classic Arvo interval form, RN (cglm, Godot): ref_arvo_box, each
  *       box under its own map.  Unsound (no widening).  The baseline of
  *       rows 1, 3, 3p, 3t, 3i, 4-7.
@@ -64,7 +64,7 @@
  *   3b  cbx_transform_boxes(&a[0], in, out, N), one call.
  *   3bp cbx_transform_boxes_prep, one call.  3ap, 3b and 3bp: output
  *       bit-identical to row 3a's.
- *   2f, 3f, 3fp      binary32: ref_arvo_boxf (tests/bench_ref.h),
+ *   2f, 3f, 3fp      binary32: ref_arvo_boxf (bench/bench_ref.h),
  *       cbx_transform_boxf and cbx_transform_box_prepf, each box under its
  *       own map; 3fp bit-identical to 3f.
  *   2af, 3af, 3afp, 3bf, 3bfp   binary32, one map for every box:
@@ -1411,7 +1411,7 @@ static int write_tsv(const char *dir, const sizes *z, const bench_ctx *b, const 
     cache_line(caches, sizeof caches);
     first_line("/proc/loadavg", load, sizeof load);
     strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S UTC", gmtime(&tt));
-    fprintf(f, "# certbox bench (tests/bench.c): one build's rows; scripts/bench_table.py renders them\n");
+    fprintf(f, "# certbox bench (bench/bench.c): one build's rows; scripts/bench_table.py renders them\n");
     fprintf(f, "#meta\tlabel\t%s\n#meta\tcc\t%s\n#meta\tcc_version\t%s\n#meta\tflags\t%s\n",
             BENCH_LABEL, BENCH_CC, BENCH_CC_VERSION, BENCH_FLAGS);
     fprintf(f, "#meta\tmachine\t%s\n#meta\tcores\t%d\n#meta\tcaches\t%s\n#meta\tloadavg\t%s\n", model,
