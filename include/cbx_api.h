@@ -26,40 +26,15 @@
  * the tightness term 2^-1065 becomes 2^-140)
  *   otherwise                       -> CBX_OK, every axis proven sound
  * out may be in itself (in-place update); otherwise *out may not overlap
- * *a or *in. */
+ * *a or *in.  The contract's behaviors are CBX_BOX_BEHAVIORS
+ * (specs/cbx_logic.h), the one statement of this promise, which the
+ * prepared, class and tight forms share. */
 /*@ requires valid_a:   \valid_read(a);
     requires valid_in:  \valid_read(in);
     requires valid_out: \valid(out);
     requires sep: \separated(out, a) && (\separated(out, in) || out == in);
     assigns *out;
-
-    behavior nan_input:
-      assumes has_nan(a, in);
-      ensures \result == CBX_EINVAL;
-      ensures whole_space(out);
-    behavior empty_input:
-      assumes !has_nan(a, in) && is_empty(in);
-      ensures \result == CBX_EMPTY;
-      ensures empty_out(out);
-    behavior box_input:
-      assumes !has_nan(a, in) && !is_empty(in);
-      ensures \result == CBX_OK || \result == CBX_ERANGE;
-      ensures axis0: axis_sound_s(out->lo[0], out->hi[0],
-        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre), \at(a->m[0][3], Pre),
-        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
-        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
-      ensures axis1: axis_sound_s(out->lo[1], out->hi[1],
-        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre), \at(a->m[1][3], Pre),
-        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
-        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
-      ensures axis2: axis_sound_s(out->lo[2], out->hi[2],
-        \at(a->m[2][0], Pre), \at(a->m[2][1], Pre), \at(a->m[2][2], Pre), \at(a->m[2][3], Pre),
-        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
-        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
-      ensures ok_iff: \result == CBX_OK <==>
-        \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
-    complete behaviors;
-    disjoint behaviors;
+    CBX_BOX_BEHAVIORS(a, in, out)
 */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out);
 

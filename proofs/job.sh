@@ -3,15 +3,16 @@
 # and one selection of goals.  Usage: sh proofs/job.sh NAME (run from the
 # checkout's root, with WHY3CONFIG set; proofs/run.sh does both).
 #   L64, L32  the lemmas of each family (proofs/lemmas.c, proofs/lemmas_f.c)
-#   A64, A32  the kernels that need -wp-split (SPLIT64, SPLIT32: their
-#             two-sided postconditions over several behaviors time out
-#             whole, and one goal per side proves fastest)
-#   K64, K32  the other rounding primitives and kernels, without -wp-split
-#             (measured: half the goals and half the prover calls of the
-#             split run, every goal within pass 1)
-#   B64, B32  everything else (domain checks, public functions), without
-#             -wp-split (splitting the behaviors' postconditions multiplies
-#             goals); B64 is cut in two (B64a, B64b) to balance the jobs
+#   A64, A32  the functions marked /* proof: -wp-split */ in their source
+#             (their two-sided postconditions over several behaviors time
+#             out whole, and one goal per side proves fastest)
+#   K64, K32  the rounding primitives and kernels (src/core/*.h,
+#             src/algo/*.h), without -wp-split (measured: half the goals
+#             and half the prover calls of the split run)
+#   B64a      binary64-only code (src/f64/*.c: tight mode, classes, motion)
+#   B64b, B32 the rest: the algorithms of src/algo/*.c (public functions,
+#             domain checks), without -wp-split (splitting the behaviors'
+#             postconditions multiplies goals)
 #   I64, SI64 the interval-matrix functions (proofs/imat.c, with the
 #             lemmas of specs/cbx_imat_logic.h) and their smoke tests
 #   S64, S32  the smoke tests alone (-wp-smoke-tests, every regular goal
@@ -44,35 +45,27 @@ WP="-wp -wp-rte -wp-par $PAR"   # + the provers, limits and cache of each pass (
 # scripts/smoke_teeth.sh with margin).
 SMOKE="-wp -wp-rte -wp-smoke-tests ${CBX_SMOKE_OPTS:--wp-no-smoke-dead-call} -wp-prover cvc4r$fam -wp-steps ${CBX_SMOKE_STEPS:-80000} -wp-smoke-timeout ${CBX_SMOKE_TIMEOUT:-30} -wp-par $PAR -wp-cache none"
 NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@invariant,-@variant,-@breaks,-@continues,-@returns,-@complete_behaviors,-@disjoint_behaviors,-@terminates,-@decreases,-@check"
-# Functions proved with -wp-split, per family (-wp-fct rejects a name
-# that the translation unit does not define).
-KERNELS32=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,cbx_neg,cbx_column,cbx_sum3,cbx_end_lo,cbx_end_hi,cbx_axis,cbx_in2,cbx_ord3,cbx_fast_row,cbx_full_axis,cbx_fast_axis,cbx_fast_box,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,nrm3_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point,cbx_transform_box_prepf,cbx_transform_boxf,cbx_preparef
-KERNELS64=cbx_cls,cbx_mul_rn,cbx_add_rn,cbx_sub_rn,cbx_abs,cbx_min2,cbx_max2,cbx_dom_pair,cbx_widening,cbx_neg,cbx_column,cbx_sum3,cbx_end_lo,cbx_end_hi,cbx_axis,cbx_in2,cbx_ord3,cbx_fast_row,cbx_full_axis,cbx_fast_axis,cbx_fast_box,cbox_axis,b2c,cbx_c2b,ball_radius,abs_prod_up,nrm3_up,row_radius,ball_axis_bounds,ell_axis_bounds,vertex_lo,vertex_hi,pos_below,neg_below,pos_above,neg_above,point_lo,point_hi,ext_lo,ext_hi,cbx_no_point,cbx_transform_box_prep,cbx_transform_box,cbx_prepare,eft_sum,pass8,decide,certify,approx,neighbour,eft_ok,tighten_core,exact_terms,tighten_lo,tighten_hi,tight_lo_sound,tight_hi_sound,tight_axis,cbx_add_dn,cbx_add_up,in_rng,end_pair,span_add,span_id,col0_sound,col1_sound,col2_sound,lerp_pt,mot_corners,mot_points_lo,mot_points_hi
-# The kernels that need -wp-split (without it, a goal of each timed out at
-# 10 s on 2026-11-24); the other kernels are proved whole (jobs K64, K32).
-SPLIT64=cbx_transform_box,cbx_transform_box_prep,vertex_lo,vertex_hi,cbx_fast_row,cbox_axis,ball_radius,row_radius,eft_ok
-SPLIT32=cbx_transform_boxf,cbx_transform_box_prepf,vertex_lo,vertex_hi,cbx_fast_row,cbox_axis,ball_radius,row_radius
-# a comma list minus another
-minus() { echo "$1" | tr , '\n' | grep -v -x -F "$(echo "$2" | tr , '\n')" | paste -s -d, -; }
-# The binary64 public functions and their helpers that are not kernels,
-# in two halves of similar proof time (B64a: tight mode, classes, motion).
-B64A=cbx_transform_box_tight,cbx_classify,cbx_transform_box_as,kern_identity,kern_translate,fast_identity,fast_translate,ends_ok,tr_ok,is_val,translate_holds,axis_full,full_row,cbx_motion_box,mot_union,mot_axis_union,one_box,one_box_as,step,put_box,severity,batch,cbx_transform_boxes,cbx_transform_boxes_prep,class_checked
-# The interval-matrix functions (proofs/imat.c): the unit also holds the
-# kernels it includes, proved in their own jobs.
-IMAT64=cbx_icolumn,cbx_isum3,cbx_irow,iv_in,icoord_of,imat_row_bad,imat_any_bad,cbx_transform_box_imat,col_apply,whole_imat,cbx_imat_compose
+# The functions of each job come from the tree (proofs/fcts.py): the
+# primitives and kernels (src/core/*.h, src/algo/*.h: jobs K), the
+# functions marked /* proof: -wp-split */ in their source (jobs A: without
+# -wp-split a goal of each timed out), binary64-only code (src/f64/*.c:
+# B64a), the interval-matrix unit (I64), and the rest, the algorithms of
+# src/algo/*.c (B64b, B32).  A new function joins its layer's job by
+# where it is written; nothing here lists names.
+fcts() { python3 proofs/fcts.py "$@"; }
 # TU: the translation unit; OPTS: its options; SEL: the goals it proves
 case $name in
-  I64) TU=proofs/imat.c; OPTS=$WP; SEL="-wp-fct $IMAT64" ;;
-  SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SEL="-wp-fct $IMAT64" ;;
+  I64) TU=proofs/imat.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU imat)" ;;
+  SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SEL="-wp-fct $(fcts $TU imat)" ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
-  A64) TU=proofs/all.c; OPTS="$WP -wp-split"; SEL="-wp-fct $SPLIT64" ;;
-  A32) TU=proofs/all_f.c; OPTS="$WP -wp-split"; SEL="-wp-fct $SPLIT32" ;;
-  K64) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $(minus $KERNELS64 $SPLIT64)" ;;
-  K32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-fct $(minus $KERNELS32 $SPLIT32)" ;;
-  B64a) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $B64A" ;;
-  B64b) TU=proofs/all.c; OPTS=$WP; SEL="-wp-skip-fct $KERNELS64,$B64A" ;;
-  B32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-skip-fct $KERNELS32" ;;
+  A64) TU=proofs/all.c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU split)" ;;
+  A32) TU=proofs/all_f.c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU split)" ;;
+  K64) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU kernels)" ;;
+  K32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU kernels)" ;;
+  B64a) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU f64)" ;;
+  B64b) TU=proofs/all.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split),$(fcts $TU f64)" ;;
+  B32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split)" ;;
   S64) TU=proofs/all.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;
   S32) TU=proofs/all_f.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;
   *) echo "job.sh: unknown job $name" >&2; exit 2 ;;

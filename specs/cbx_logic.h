@@ -158,8 +158,15 @@
     ensures axis2: axis_sound_s(out->lo[2], out->hi[2], CBX_ROWV(a, 2, Pre), CBX_BV(in, Pre)); \
     ensures rows: \at(row_ok(a, in, 0) && row_ok(a, in, 1) && row_ok(a, in, 2), Pre);
 
-/* cbx_transform_box's behaviors, for a function (a, in, out) that promises
- * exactly what cbx_transform_box promises. */
+/* cbx_transform_box's promise, written once: the behaviors of every
+ * function (a, in, out) that returns one box of the map *a (in
+ * include/: cbx_transform_box, cbx_transform_box_prep, the tight mode,
+ * cbx_transform_box_as; in src/: the one-box helpers).  In words: NaN in
+ * *a or *in -> CBX_EINVAL and the whole space; else an empty *in ->
+ * CBX_EMPTY and the empty box; else every axis i satisfies axis_sound_s
+ * (the exact image of every corner inside [lo_i, hi_i], each finite end
+ * within the tightness bound) and the status is CBX_OK exactly when every
+ * row is computed without loss (row_ok). */
 #define CBX_BOX_BEHAVIORS(a, in, out) \
     behavior nan_input: \
       assumes has_nan(a, in); \

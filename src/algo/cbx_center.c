@@ -15,6 +15,7 @@
 typedef struct cbox_res { cbx_fp c, h; } cbox_res;
 
 /* One output axis of the center/half transform. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t);
     requires finb: \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
                    && \is_finite(h0) && \is_finite(h1) && \is_finite(h2);

@@ -70,6 +70,7 @@ static inline int cbx_box_fast(const cbx_box *b)
 }
 
 /* Lemma function (no code): a row of the fast range is full. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
                   && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
                   && \is_finite(l2) && \is_finite(h2);

@@ -162,6 +162,7 @@ static int any_nan(const cbx_affine *a, const cbx_box *in)
  * (src/algo/cbx_fast.h); otherwise the careful path: NaN, empty, then axis by
  * axis (the same kernel on a full row, each end from its vertex on a
  * half-space or out-of-domain row, the whole line on an infinite entry). */
+/* proof: -wp-split */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
     if (cbx_map_fast(a) && cbx_box_fast(in))
@@ -225,6 +226,7 @@ void cbx_prepare(const cbx_affine *a, cbx_prepared *p)
 /* The box check only: the map's was done by cbx_prepare (p->fast).  A
  * class other than GENERAL goes to the class kernel, which checks it
  * against the map. */
+/* proof: -wp-split */
 cbx_status cbx_transform_box_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out)
 {
 #if CBX_INST == 64

@@ -131,6 +131,7 @@ static void rn_scale(cbx_fp b0, cbx_fp b1, cbx_fp b2)
 }
 
 /* An upper bound r of the norm of (b0, b1, b2): b . b <= r^2. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
     requires rng: cls(b0, b0, CBX_SB, CBX_SB) && cls(b1, b1, CBX_SB, CBX_SB)
                   && cls(b2, b2, CBX_SB, CBX_SB);
@@ -199,6 +200,7 @@ static cbx_fp abs_prod_up(cbx_fp r, cbx_fp d)
 /* An upper bound r of the norm of (b0, b1, b2), accurate for every row: a
  * row with all |b_j| < 2^-300 (whose squares may underflow) is first scaled
  * by 2^600, and its radius scaled back by 2^-600, both rounded up. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2);
     requires rng: cls(b0, b0, CBX_SB, CBX_SB) && cls(b1, b1, CBX_SB, CBX_SB)
                   && cls(b2, b2, CBX_SB, CBX_SB);

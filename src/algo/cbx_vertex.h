@@ -43,6 +43,7 @@ static inline void pos_above(cbx_fp m, cbx_fp l, cbx_fp h) { (void)m; (void)l; (
 static inline void neg_above(cbx_fp m, cbx_fp l, cbx_fp h) { (void)m; (void)l; (void)h; }
 
 /* The vertex of [l, h] where m*x is least; ok == 0: m*x unbounded below. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
     assigns \nothing;
     ensures unb: \result.ok == 0 <==> unb_lo(m, l, h);
@@ -75,6 +76,7 @@ static inline end_result vertex_lo(cbx_fp m, cbx_fp l, cbx_fp h)
 }
 
 /* The vertex of [l, h] where m*x is greatest; ok == 0: unbounded above. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(m) && !\is_NaN(l) && !\is_NaN(h);
     assigns \nothing;
     ensures unb: \result.ok == 0 <==> unb_hi(m, l, h);

@@ -139,6 +139,7 @@ static double neighbour(double c, int dn)
 }
 
 /* two_prod's domain: the product is 0 or its error term is a double. */
+/* proof: -wp-split */
 /*@ requires fin: \is_finite(m) && \is_finite(v) && in_dom(m, v);
     assigns \nothing;
     ensures ok: \result != 0 ==> (m*v == 0 || m*v >= 0x1p-969 || m*v <= -0x1p-969);
