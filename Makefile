@@ -54,7 +54,7 @@ B := build
 LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c \
            src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c \
            src/core/cbx_ieee.c src/f32/cbx_ieee_f.c
-HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h
+HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h specs/cbx_plane.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
@@ -146,7 +146,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane
 test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -163,6 +163,7 @@ test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_eft 1000 1
 	./$(B)/test_classes 200000 1
 	./$(B)/test_float 200000 1
+	./$(B)/test_plane 200000 1
 	./$(B)/test_ieee
 	./$(B)/test_scene examples/*.scene
 	for f in examples/*.scene; do ./$(B)/certbox $$f > /dev/null || exit 1; done
@@ -185,6 +186,7 @@ test-san: $(TESTS:%=$(B)/san/test_%) $(B)/certbox
 	./$(B)/san/test_eft 200 2
 	./$(B)/san/test_classes 50000 2
 	./$(B)/san/test_float 50000 2
+	./$(B)/san/test_plane 40000 2
 	./$(B)/san/test_ieee
 	./$(B)/san/test_scene examples/*.scene
 	./$(B)/san/test_gltf $(GLTFDIR) tests/data/gltf $(B)/certbox
@@ -340,7 +342,7 @@ install-check: all check-deps-test
 # certbox.h and what it includes (both families' API, the precision tables,
 # and the ACSL logic that Frama-C users of the contracts need).
 PUBHDR := $(wildcard include/*.h) \
-          specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h
+          specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h specs/cbx_plane.h
 # The CMake package (cmake/*.cmake.in): its paths relative to its own place
 # (realpath -s: by name, not through this machine's symlinks), so that the
 # install can be staged or moved; absolute if they have no relative form.

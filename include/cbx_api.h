@@ -95,6 +95,98 @@ cbx_status cbx_transform_box_prep(const cbx_prepared *p, const cbx_box *in, cbx_
 */
 cbx_status cbx_transform_boxes_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out, size_t n);
 
+/* ---- the 2D form: boxes of the plane under 2x3 affine maps --------------
+ * cbx_transform_box2: the box [lo_0, hi_0] x [lo_1, hi_1] under the map
+ * y_i = m[i][0] x_0 + m[i][1] x_1 + m[i][2] (Arvo's interval form, outward
+ * rounded), with cbx_transform_box's statuses, special outputs, domain and
+ * proven statement on each of its two axes: each axis is the 3D axis with
+ * a zero third column and a third box axis [0, 0] (specs/cbx_plane.h), so
+ * for every real point of the box the exact image lies in [lo_i, hi_i],
+ * each finite end within 12 u S + 2^-1065 of the exact end (binary32:
+ * 12 u S + 2^-140), CBX_OK exactly when both rows are full.
+ *   NaN anywhere in *a or *in       -> CBX_EINVAL, *out = [-inf, +inf]^2
+ *   lo[j] > hi[j] for some j        -> CBX_EMPTY,  *out = lo +inf, hi -inf
+ *   some axis outside the domain    -> CBX_ERANGE, that axis bounded as in
+ *                                      the 3D form (or [-inf, +inf])
+ * out may be in itself; otherwise *out may not overlap *a or *in. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes has_nan2(a, in);
+      ensures \result == CBX_EINVAL;
+      ensures whole_plane(out);
+    behavior empty_input:
+      assumes !has_nan2(a, in) && is_empty2(in);
+      ensures \result == CBX_EMPTY;
+      ensures empty_out2(out);
+    behavior box_input:
+      assumes !has_nan2(a, in) && !is_empty2(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: axis2_sound(out->lo[0], out->hi[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre));
+      ensures axis1: axis2_sound(out->lo[1], out->hi[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre));
+      ensures ok_iff: \result == CBX_OK <==> \at(row2_ok(a, in, 0) && row2_ok(a, in, 1), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_box2(const cbx_affine2 *a, const cbx_box2 *in, cbx_box2 *out);
+
+/* cbx_disk_box2: the image of the unit disk {p : p_0^2 + p_1^2 <= 1} under
+ * the 2D map: axis i is m[i][2] -+ sqrt(m[i][0]^2 + m[i][1]^2), rounded
+ * outward (the dual conic; the sphere's kernel with a zero third entry).
+ * cbx_ellipse_box2: the ellipse center + rot * diag(radii) * p, |p| <= 1
+ * (rot need not be orthogonal; radii may be negative or zero).  Domains,
+ * statuses and the proven statement are those of cbx_sphere_box and
+ * cbx_ellipsoid_box on the plane (specs/cbx_plane.h: disk_axis,
+ * ell2_axis): on every axis in the domain, for every real p with
+ * p_0^2 + p_1^2 <= 1, lo_i <= (M p + T)_i <= hi_i (exact reals; for the
+ * ellipse M_ij = rot[i][j] * radii[j] exactly), and each end within
+ * 80 u (|T_i| + |M_i|) + 2^-1064 of the exact end T_i -+ |M_i| (binary32:
+ * 2^-139); NaN -> CBX_EINVAL and the whole plane; outside the domain ->
+ * CBX_ERANGE and those axes [-inf, +inf]. */
+/*@ requires valid: \valid_read(a) && \valid(out) && \separated(a, out);
+    assigns *out;
+    behavior nan_input:
+      assumes aff2_nan(a);
+      ensures \result == CBX_EINVAL && whole_plane(out);
+    behavior map_input:
+      assumes !aff2_nan(a);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: disk_axis(out->lo[0], out->hi[0], a->m[0][0], a->m[0][1], a->m[0][2]);
+      ensures axis1: disk_axis(out->lo[1], out->hi[1], a->m[1][0], a->m[1][1], a->m[1][2]);
+      ensures ok_iff: \result == CBX_OK <==>
+        (disk_dom(a->m[0][0], a->m[0][1], a->m[0][2]) && disk_dom(a->m[1][0], a->m[1][1], a->m[1][2]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_disk_box2(const cbx_affine2 *a, cbx_box2 *out);
+
+/*@ requires valid: \valid_read(center + (0 .. 1)) && \valid_read(radii + (0 .. 1))
+                    && \valid_read(rot + (0 .. 1)) && \valid(out);
+    requires sep: \separated(out, center + (0 .. 1)) && \separated(out, radii + (0 .. 1))
+                  && \separated(out, rot + (0 .. 1));
+    assigns *out;
+    behavior nan_input:
+      assumes ell2_nan(center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_plane(out);
+    behavior ellipse_input:
+      assumes !ell2_nan(center, radii, rot);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: ell2_axis(out->lo[0], out->hi[0], rot[0][0], rot[0][1], radii[0], radii[1], center[0]);
+      ensures axis1: ell2_axis(out->lo[1], out->hi[1], rot[1][0], rot[1][1], radii[0], radii[1], center[1]);
+      ensures ok_iff: \result == CBX_OK <==>
+        (ell2_dom(rot[0][0], rot[0][1], radii[0], radii[1], center[0])
+         && ell2_dom(rot[1][0], rot[1][1], radii[0], radii[1], center[1]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_ellipse_box2(const cbx_fp center[2], const cbx_fp radii[2],
+                            const cbx_fp rot[2][2], cbx_box2 *out);
+
 /* ---- center/half-diagonal form (Arvo's Fig. 2) -------------------------
  * A cbx_cbox means the exact real box [c - h, c + h] (per axis); h >= 0.
  * h < 0 on some axis means an empty box.  Every function below is sound for

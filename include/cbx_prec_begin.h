@@ -165,6 +165,11 @@
 #define cbx_cbox_to_box cbx_cbox_to_boxf
 #define cbx_sphere_box cbx_sphere_boxf
 #define cbx_ellipsoid_box cbx_ellipsoid_boxf
+#define cbx_affine2 cbx_affine2f
+#define cbx_box2 cbx_box2f
+#define cbx_transform_box2 cbx_transform_box2f
+#define cbx_disk_box2 cbx_disk_box2f
+#define cbx_ellipse_box2 cbx_ellipse_box2f
 #define cbx_pinf cbx_pinf_f
 #define cbx_ninf cbx_ninf_f
 #define cbx_sqrt_rn cbx_sqrt_rn_f

@@ -18,6 +18,11 @@
 #undef cbx_cbox_to_box
 #undef cbx_sphere_box
 #undef cbx_ellipsoid_box
+#undef cbx_affine2
+#undef cbx_box2
+#undef cbx_transform_box2
+#undef cbx_disk_box2
+#undef cbx_ellipse_box2
 #undef cbx_pinf
 #undef cbx_ninf
 #undef cbx_sqrt_rn

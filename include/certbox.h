@@ -61,6 +61,13 @@ typedef struct cbx_affinef { float m[3][4]; } cbx_affinef;
 typedef struct cbx_boxf { float lo[3], hi[3]; } cbx_boxf;
 typedef struct cbx_cboxf { float c[3], h[3]; } cbx_cboxf;
 
+/* The 2D family (both formats): y_i = m[i][0]*x_0 + m[i][1]*x_1 + m[i][2]
+ * (i = 0, 1), and the closed box [lo[0],hi[0]] x [lo[1],hi[1]]. */
+typedef struct cbx_affine2 { double m[2][3]; } cbx_affine2;
+typedef struct cbx_box2 { double lo[2], hi[2]; } cbx_box2;
+typedef struct cbx_affine2f { float m[2][3]; } cbx_affine2f;
+typedef struct cbx_box2f { float lo[2], hi[2]; } cbx_box2f;
+
 /* An interval matrix (binary64): the set of affine maps whose entry (i, j)
  * lies in [lo[i][j], hi[i][j]], the translation in column 3; what a chain
  * of rounded transforms or a rotation built from a quaternion is known to
@@ -114,6 +121,7 @@ typedef enum cbx_class {
 #include "cbx_prec_begin.h"
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
+#include "cbx_plane.h"
 #include "cbx_imat.h"
 #endif
 #include "cbx_api.h"
@@ -124,6 +132,7 @@ typedef enum cbx_class {
 #include "cbx_prec_begin.h"
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
+#include "cbx_plane.h"
 #endif
 #include "cbx_api.h"
 #include "cbx_prec_end.h"

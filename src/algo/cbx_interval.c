@@ -203,6 +203,46 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
 }
 
 
+/* The 2D form: each axis is the 3D careful path's axis with a zero third
+ * column and a third box axis [0, 0] (specs/cbx_plane.h). */
+/*@ requires \valid_read(a) && \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> has_nan2(a, in);
+*/
+static int any_nan2(const cbx_affine2 *a, const cbx_box2 *in)
+{
+    return aff2_any_nan(a) | box2_any_nan(in);
+}
+
+cbx_status cbx_transform_box2(const cbx_affine2 *a, const cbx_box2 *in, cbx_box2 *out)
+{
+    if (any_nan2(a, in)) {
+        set_whole2(out);
+        return CBX_EINVAL;
+    }
+    if (plane_any_empty(in)) {
+        set_empty2(out);
+        return CBX_EMPTY;
+    }
+    cbx_fp z = CBX_C(0.0);
+    cbx_fp l0 = in->lo[0], l1 = in->lo[1];
+    cbx_fp h0 = in->hi[0], h1 = in->hi[1];
+    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2];
+    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2];
+    axis_result r0 = transform_axis(a00, a01, z, a02, l0, h0, l1, h1, z, z);
+    axis_result r1 = transform_axis(a10, a11, z, a12, l0, h0, l1, h1, z, z);
+    out->lo[0] = r0.lo; out->hi[0] = r0.hi;
+    out->lo[1] = r1.lo; out->hi[1] = r1.hi;
+    /*@ assert same_in: \at(a->m[0][0], Pre) == a00 && \at(a->m[0][1], Pre) == a01
+          && \at(a->m[0][2], Pre) == a02 && \at(a->m[1][0], Pre) == a10
+          && \at(a->m[1][1], Pre) == a11 && \at(a->m[1][2], Pre) == a12
+          && \at(in->lo[0], Pre) == l0 && \at(in->lo[1], Pre) == l1
+          && \at(in->hi[0], Pre) == h0 && \at(in->hi[1], Pre) == h1; */
+    /*@ assert same_out: out->lo[0] == r0.lo && out->hi[0] == r0.hi
+          && out->lo[1] == r1.lo && out->hi[1] == r1.hi; */
+    return (r0.ok && r1.ok) ? CBX_OK : CBX_ERANGE;
+}
+
 /* ---- prepared maps ---------------------------------------------------- */
 
 void cbx_prepare(const cbx_affine *a, cbx_prepared *p)

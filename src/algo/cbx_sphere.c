@@ -469,3 +469,65 @@ cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
           && out->lo[2] == e2.lo && out->hi[2] == e2.hi; */
     return (e0.ok && e1.ok && e2.ok) ? CBX_OK : CBX_ERANGE;
 }
+
+
+/* ---- the 2D forms: disk and ellipse (specs/cbx_plane.h) ------------------
+ * Each axis is the sphere's or the ellipsoid's axis function with a zero
+ * third entry; lemma ball_disk turns its 3D cover into the disk's. */
+
+/* contract: include/cbx_api.h */
+cbx_status cbx_disk_box2(const cbx_affine2 *a, cbx_box2 *out)
+{
+    if (aff2_any_nan(a)) {
+        set_whole2(out);
+        return CBX_EINVAL;
+    }
+    cbx_fp z = CBX_C(0.0);
+    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2];
+    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2];
+    ball_res e0 = sphere_axis(a00, a01, z, a02);
+    ball_res e1 = sphere_axis(a10, a11, z, a12);
+    out->lo[0] = e0.lo; out->hi[0] = e0.hi;
+    out->lo[1] = e1.lo; out->hi[1] = e1.hi;
+    /*@ assert same_in: a->m[0][0] == a00 && a->m[0][1] == a01 && a->m[0][2] == a02
+          && a->m[1][0] == a10 && a->m[1][1] == a11 && a->m[1][2] == a12; */
+    /*@ assert same_out: out->lo[0] == e0.lo && out->hi[0] == e0.hi
+          && out->lo[1] == e1.lo && out->hi[1] == e1.hi; */
+    return (e0.ok && e1.ok) ? CBX_OK : CBX_ERANGE;
+}
+
+/*@ requires \valid_read(center + (0 .. 1)) && \valid_read(radii + (0 .. 1))
+             && \valid_read(rot + (0 .. 1));
+    assigns \nothing;
+    ensures \result != 0 <==> ell2_nan(center, radii, rot);
+*/
+static int ell2_any_nan(const cbx_fp *center, const cbx_fp *radii, const cbx_fp (*rot)[2])
+{
+    return cbx_is_nan(center[0]) | cbx_is_nan(center[1]) | cbx_is_nan(radii[0]) | cbx_is_nan(radii[1])
+           | cbx_is_nan(rot[0][0]) | cbx_is_nan(rot[0][1]) | cbx_is_nan(rot[1][0]) | cbx_is_nan(rot[1][1]);
+}
+
+/* contract: include/cbx_api.h */
+cbx_status cbx_ellipse_box2(const cbx_fp center[2], const cbx_fp radii[2],
+                            const cbx_fp rot[2][2], cbx_box2 *out)
+{
+    if (ell2_any_nan(center, radii, rot)) {
+        set_whole2(out);
+        return CBX_EINVAL;
+    }
+    cbx_fp z = CBX_C(0.0);
+    cbx_fp d0 = radii[0], d1 = radii[1];
+    cbx_fp c0 = center[0], c1 = center[1];
+    cbx_fp r00 = rot[0][0], r01 = rot[0][1];
+    cbx_fp r10 = rot[1][0], r11 = rot[1][1];
+    ball_res e0 = ellipsoid_axis(r00, r01, z, d0, d1, z, c0);
+    ball_res e1 = ellipsoid_axis(r10, r11, z, d0, d1, z, c1);
+    out->lo[0] = e0.lo; out->hi[0] = e0.hi;
+    out->lo[1] = e1.lo; out->hi[1] = e1.hi;
+    /*@ assert same_in: rot[0][0] == r00 && rot[0][1] == r01 && rot[1][0] == r10
+          && rot[1][1] == r11 && radii[0] == d0 && radii[1] == d1
+          && center[0] == c0 && center[1] == c1; */
+    /*@ assert same_out: out->lo[0] == e0.lo && out->hi[0] == e0.hi
+          && out->lo[1] == e1.lo && out->hi[1] == e1.hi; */
+    return (e0.ok && e1.ok) ? CBX_OK : CBX_ERANGE;
+}

@@ -173,4 +173,53 @@ static inline void set_empty(cbx_box *out)
     out->lo[2] = cbx_pinf(); out->hi[2] = cbx_ninf();
 }
 
+/* The same checks and special outputs for the 2D form (specs/cbx_plane.h). */
+/*@ requires \valid_read(a);
+    assigns \nothing;
+    ensures \result != 0 <==> aff2_nan(a);
+*/
+static inline int aff2_any_nan(const cbx_affine2 *a)
+{
+    return cbx_is_nan(a->m[0][0]) | cbx_is_nan(a->m[0][1]) | cbx_is_nan(a->m[0][2])
+           | cbx_is_nan(a->m[1][0]) | cbx_is_nan(a->m[1][1]) | cbx_is_nan(a->m[1][2]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> box2_nan(in);
+*/
+static inline int box2_any_nan(const cbx_box2 *in)
+{
+    return cbx_is_nan(in->lo[0]) | cbx_is_nan(in->lo[1]) | cbx_is_nan(in->hi[0]) | cbx_is_nan(in->hi[1]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> is_empty2(in);
+*/
+static inline int plane_any_empty(const cbx_box2 *in)
+{
+    return cbx_no_point(in->lo[0], in->hi[0]) | cbx_no_point(in->lo[1], in->hi[1]);
+}
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures whole_plane(out);
+*/
+static inline void set_whole2(cbx_box2 *out)
+{
+    out->lo[0] = cbx_ninf(); out->hi[0] = cbx_pinf();
+    out->lo[1] = cbx_ninf(); out->hi[1] = cbx_pinf();
+}
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures empty_out2(out);
+*/
+static inline void set_empty2(cbx_box2 *out)
+{
+    out->lo[0] = cbx_pinf(); out->hi[0] = cbx_ninf();
+    out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
+}
+
 #endif /* CBX_DOMAIN_H */
