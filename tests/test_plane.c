@@ -120,6 +120,47 @@ static void drop_third(xu_verdict *v)
     v->ax[2].end_kind[0] = v->ax[2].end_kind[1] = -1;
 }
 
+/* What a case's two calls gave, beside the oracle's verdict. */
+typedef struct facts {
+    int bits_same;     /* status and axes 0, 1 = the 3D function's           */
+    int inplace_same;  /* out == in gave the same status and bits            */
+    int inputs_same;   /* the map and the box unchanged by the call          */
+} facts;
+
+/* Judge one case: the oracle on the embedding (o3: the 2D output's two axes
+ * and the 3D call's third), then the facts; returns 1 on failure. */
+static int judge(xu_exact *x, xu_stats *st, tally *t, const cbx_affine *a3, const cbx_box *b3,
+                 const cbx_box *o3, cbx_status s, const facts *f, int corners, const char *fam,
+                 const char *what)
+{
+    xu_verdict v;
+    int k;
+    xu_check_result(x, a3, b3, o3, s, corners, &v);
+    for (k = 0; k < XU_NFLAGS; k++) t->checks += v.applied[k];
+    t->checks += 3;
+    if (!v.failed && !f->bits_same) {
+        v.failed = 1;
+        snprintf(v.why, sizeof v.why, "not the bits of the 3D function on the embedding");
+    }
+    if (!v.failed && !f->inplace_same) {
+        v.failed = 1;
+        snprintf(v.why, sizeof v.why, "in place differs from the separate output");
+    }
+    if (!v.failed && !f->inputs_same) {
+        v.failed = 1;
+        snprintf(v.why, sizeof v.why, "an input changed");
+    }
+    t->cases++;
+    if (xu_status_index(s) >= 0) t->status[xu_status_index(s)]++;
+    drop_third(&v);
+    xu_stats_add(st, &v, a3, b3);
+    if (v.failed) {
+        t->failed++;
+        fail(fam, what, v.why);
+    }
+    return v.failed;
+}
+
 /* One case in binary64; returns 1 on failure. */
 static int run64(xu_exact *x, xu_stats *st, tally *t, const double m[2][3], const double lo[2],
                  const double hi[2], int corners, const char *what)
@@ -128,8 +169,8 @@ static int run64(xu_exact *x, xu_stats *st, tally *t, const double m[2][3], cons
     cbx_box2 b, b0, o, ip;
     cbx_affine a3;
     cbx_box b3, r3, o3;
-    cbx_status s, s3, si;
-    xu_verdict v;
+    cbx_status s, s3;
+    facts f;
     int i, k;
     for (i = 0; i < 2; i++) {
         for (k = 0; k < 3; k++) a.m[i][k] = m[i][k];
@@ -147,34 +188,11 @@ static int run64(xu_exact *x, xu_stats *st, tally *t, const double m[2][3], cons
         o3.lo[i] = o.lo[i];
         o3.hi[i] = o.hi[i];
     }
-    xu_check_result(x, &a3, &b3, &o3, s, corners, &v);
-    for (k = 0; k < XU_NFLAGS; k++) t->checks += v.applied[k];
-    if (!v.failed && (s != s3 || memcmp(o.lo, r3.lo, 2 * sizeof o.lo[0]) || memcmp(o.hi, r3.hi, 2 * sizeof o.hi[0]))) {
-        v.failed = 1;
-        snprintf(v.why, sizeof v.why, "not the bits of the 3D function on the embedding");
-    }
-    t->checks++;
+    f.bits_same = s == s3 && !memcmp(o.lo, r3.lo, sizeof o.lo) && !memcmp(o.hi, r3.hi, sizeof o.hi);
+    f.inputs_same = !memcmp(&a, &a0, sizeof a) && !memcmp(&b, &b0, sizeof b);
     ip = b;
-    si = cbx_transform_box2(&a, &ip, &ip);
-    t->checks++;
-    if (!v.failed && (si != s || memcmp(&ip, &o, sizeof o))) {
-        v.failed = 1;
-        snprintf(v.why, sizeof v.why, "in place differs from the separate output");
-    }
-    t->checks++;
-    if (!v.failed && (memcmp(&a, &a0, sizeof a) || memcmp(&b, &b0, sizeof b))) {
-        v.failed = 1;
-        snprintf(v.why, sizeof v.why, "an input changed");
-    }
-    t->cases++;
-    if (xu_status_index(s) >= 0) t->status[xu_status_index(s)]++;
-    drop_third(&v);
-    xu_stats_add(st, &v, &a3, &b3);
-    if (v.failed) {
-        t->failed++;
-        fail("binary64", what, v.why);
-    }
-    return v.failed;
+    f.inplace_same = cbx_transform_box2(&a, &ip, &ip) == s && !memcmp(&ip, &o, sizeof o);
+    return judge(x, st, t, &a3, &b3, &o3, s, &f, corners, "binary64", what);
 }
 
 /* One case in binary32 (m, lo, hi already floats); returns 1 on failure. */
@@ -187,8 +205,8 @@ static int run32(xu_exact *x, xu_stats *st, tally *t, const double m[2][3], cons
     cbx_boxf b3f, r3f;
     cbx_affine a3;
     cbx_box b3, o3;
-    cbx_status s, s3, si;
-    xu_verdict v;
+    cbx_status s, s3;
+    facts f;
     int i, k;
     for (i = 0; i < 2; i++) {
         for (k = 0; k < 3; k++) a.m[i][k] = (float)m[i][k];
@@ -210,34 +228,11 @@ static int run32(xu_exact *x, xu_stats *st, tally *t, const double m[2][3], cons
         o3.lo[i] = i < 2 ? (double)o.lo[i] : (double)r3f.lo[i];
         o3.hi[i] = i < 2 ? (double)o.hi[i] : (double)r3f.hi[i];
     }
-    xu_check_result(x, &a3, &b3, &o3, s, corners, &v);
-    for (k = 0; k < XU_NFLAGS; k++) t->checks += v.applied[k];
-    if (!v.failed && (s != s3 || memcmp(o.lo, r3f.lo, 2 * sizeof o.lo[0]) || memcmp(o.hi, r3f.hi, 2 * sizeof o.hi[0]))) {
-        v.failed = 1;
-        snprintf(v.why, sizeof v.why, "not the bits of the 3D function on the embedding");
-    }
-    t->checks++;
+    f.bits_same = s == s3 && !memcmp(o.lo, r3f.lo, sizeof o.lo) && !memcmp(o.hi, r3f.hi, sizeof o.hi);
+    f.inputs_same = !memcmp(&a, &a0, sizeof a) && !memcmp(&b, &b0, sizeof b);
     ip = b;
-    si = cbx_transform_box2f(&a, &ip, &ip);
-    t->checks++;
-    if (!v.failed && (si != s || memcmp(&ip, &o, sizeof o))) {
-        v.failed = 1;
-        snprintf(v.why, sizeof v.why, "in place differs from the separate output");
-    }
-    t->checks++;
-    if (!v.failed && (memcmp(&a, &a0, sizeof a) || memcmp(&b, &b0, sizeof b))) {
-        v.failed = 1;
-        snprintf(v.why, sizeof v.why, "an input changed");
-    }
-    t->cases++;
-    if (xu_status_index(s) >= 0) t->status[xu_status_index(s)]++;
-    drop_third(&v);
-    xu_stats_add(st, &v, &a3, &b3);
-    if (v.failed) {
-        t->failed++;
-        fail("binary32", what, v.why);
-    }
-    return v.failed;
+    f.inplace_same = cbx_transform_box2f(&a, &ip, &ip) == s && !memcmp(&ip, &o, sizeof o);
+    return judge(x, st, t, &a3, &b3, &o3, s, &f, corners, "binary32", what);
 }
 
 typedef int (*runner)(xu_exact *, xu_stats *, tally *, const double[2][3], const double[2],
