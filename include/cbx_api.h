@@ -135,6 +135,35 @@ cbx_status cbx_transform_boxes_prep(const cbx_prepared *p, const cbx_box *in, cb
 */
 cbx_status cbx_transform_box2(const cbx_affine2 *a, const cbx_box2 *in, cbx_box2 *out);
 
+/* cbx_transform_cbox2: the center/half-diagonal form of the plane,
+ * c' = M c + T, h' = |M| h outward, with cbx_transform_cbox's statuses,
+ * special outputs, domain and proven statement on each of its two axes
+ * (the 3D axis with a zero third column and c_2 = h_2 = 0,
+ * specs/cbx_plane.h).  out may be in itself. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes cbox2_has_nan(a, in);
+      ensures \result == CBX_EINVAL && cwhole2(out);
+    behavior empty_input:
+      assumes !cbox2_has_nan(a, in) && cbox2_empty(in);
+      ensures \result == CBX_EMPTY && cempty2(out);
+    behavior box_input:
+      assumes !cbox2_has_nan(a, in) && !cbox2_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures axis0: caxis2_sound(out->c[0], out->h[0],
+        \at(a->m[0][0], Pre), \at(a->m[0][1], Pre), \at(a->m[0][2], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->h[0], Pre), \at(in->h[1], Pre));
+      ensures axis1: caxis2_sound(out->c[1], out->h[1],
+        \at(a->m[1][0], Pre), \at(a->m[1][1], Pre), \at(a->m[1][2], Pre),
+        \at(in->c[0], Pre), \at(in->c[1], Pre), \at(in->h[0], Pre), \at(in->h[1], Pre));
+      ensures ok_iff: \result == CBX_OK <==> \at(crow2_ok(a, in, 0) && crow2_ok(a, in, 1), Pre);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_transform_cbox2(const cbx_affine2 *a, const cbx_cbox2 *in, cbx_cbox2 *out);
+
 /* cbx_disk_box2: the image of the unit disk {p : p_0^2 + p_1^2 <= 1} under
  * the 2D map: axis i is m[i][2] -+ sqrt(m[i][0]^2 + m[i][1]^2), rounded
  * outward (the dual conic; the sphere's kernel with a zero third entry).

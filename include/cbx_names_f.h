@@ -94,6 +94,14 @@
 #define axis2_sound axis2_sound_f
 #define axis2_ok axis2_ok_f
 #define row2_ok row2_ok_f
+#define cbox2_nan cbox2_nan_f
+#define cbox2_has_nan cbox2_has_nan_f
+#define cbox2_empty cbox2_empty_f
+#define cwhole2 cwhole2_f
+#define cempty2 cempty2_f
+#define caxis2_sound caxis2_sound_f
+#define caxis2_ok caxis2_ok_f
+#define crow2_ok crow2_ok_f
 #define disk_cover disk_cover_f
 #define ball_disk ball_disk_f
 #define disk_plain disk_plain_f
@@ -190,6 +198,14 @@
 #undef axis2_sound
 #undef axis2_ok
 #undef row2_ok
+#undef cbox2_nan
+#undef cbox2_has_nan
+#undef cbox2_empty
+#undef cwhole2
+#undef cempty2
+#undef caxis2_sound
+#undef caxis2_ok
+#undef crow2_ok
 #undef disk_cover
 #undef ball_disk
 #undef disk_plain

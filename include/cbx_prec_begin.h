@@ -167,6 +167,8 @@
 #define cbx_ellipsoid_box cbx_ellipsoid_boxf
 #define cbx_affine2 cbx_affine2f
 #define cbx_box2 cbx_box2f
+#define cbx_cbox2 cbx_cbox2f
+#define cbx_transform_cbox2 cbx_transform_cbox2f
 #define cbx_transform_box2 cbx_transform_box2f
 #define cbx_disk_box2 cbx_disk_box2f
 #define cbx_ellipse_box2 cbx_ellipse_box2f

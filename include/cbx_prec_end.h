@@ -20,6 +20,8 @@
 #undef cbx_ellipsoid_box
 #undef cbx_affine2
 #undef cbx_box2
+#undef cbx_cbox2
+#undef cbx_transform_cbox2
 #undef cbx_transform_box2
 #undef cbx_disk_box2
 #undef cbx_ellipse_box2

@@ -62,11 +62,14 @@ typedef struct cbx_boxf { float lo[3], hi[3]; } cbx_boxf;
 typedef struct cbx_cboxf { float c[3], h[3]; } cbx_cboxf;
 
 /* The 2D family (both formats): y_i = m[i][0]*x_0 + m[i][1]*x_1 + m[i][2]
- * (i = 0, 1), and the closed box [lo[0],hi[0]] x [lo[1],hi[1]]. */
+ * (i = 0, 1), the closed box [lo[0],hi[0]] x [lo[1],hi[1]], and the box
+ * [c - h, c + h] per axis (h < 0: empty). */
 typedef struct cbx_affine2 { double m[2][3]; } cbx_affine2;
 typedef struct cbx_box2 { double lo[2], hi[2]; } cbx_box2;
+typedef struct cbx_cbox2 { double c[2], h[2]; } cbx_cbox2;
 typedef struct cbx_affine2f { float m[2][3]; } cbx_affine2f;
 typedef struct cbx_box2f { float lo[2], hi[2]; } cbx_box2f;
+typedef struct cbx_cbox2f { float c[2], h[2]; } cbx_cbox2f;
 
 /* An interval matrix (binary64): the set of affine maps whose entry (i, j)
  * lies in [lo[i][j], hi[i][j]], the translation in column 3; what a chain

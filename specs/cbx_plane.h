@@ -47,6 +47,30 @@
       axis2_ok(a->m[i][0], a->m[i][1], a->m[i][2], b->lo[0], b->hi[0], b->lo[1], b->hi[1]);
 
     // ---------------------------------------------------------------------
+    // The center/half-diagonal form of the plane (cbx_cbox2): the 3D
+    // form's statement (specs/cbx_spec.h: caxis_sound_s, crow_full,
+    // crow_dfull) with the zero third column and c_2 = h_2 = 0.
+    // ---------------------------------------------------------------------
+    predicate cbox2_nan(cbx_cbox2 *b) =
+      \is_NaN(b->c[0]) || \is_NaN(b->c[1]) || \is_NaN(b->h[0]) || \is_NaN(b->h[1]);
+    predicate cbox2_has_nan(cbx_affine2 *a, cbx_cbox2 *b) = aff2_nan(a) || cbox2_nan(b);
+    // h < 0 on some axis (IEEE comparison; -0 is not negative)
+    predicate cbox2_empty(cbx_cbox2 *b) =
+      CBX_LT(b->h[0], (cbx_fp)0.0) || CBX_LT(b->h[1], (cbx_fp)0.0);
+    predicate cwhole2(cbx_cbox2 *o) =
+      o->c[0] == 0 && \is_plus_infinity(o->h[0]) && o->c[1] == 0 && \is_plus_infinity(o->h[1]);
+    predicate cempty2(cbx_cbox2 *o) =
+      o->c[0] == 0 && \is_minus_infinity(o->h[0]) && o->c[1] == 0 && \is_minus_infinity(o->h[1]);
+    predicate caxis2_sound(cbx_fp oc, cbx_fp oh, cbx_fp m0, cbx_fp m1, cbx_fp t,
+                           cbx_fp c0, cbx_fp c1, cbx_fp h0, cbx_fp h1) =
+      caxis_sound_s(oc, oh, m0, m1, (cbx_fp)0.0, t, c0, c1, (cbx_fp)0.0, h0, h1, (cbx_fp)0.0);
+    predicate caxis2_ok(cbx_fp m0, cbx_fp m1, cbx_fp t, cbx_fp c0, cbx_fp c1, cbx_fp h0, cbx_fp h1) =
+      crow_full(m0, m1, (cbx_fp)0.0, t, c0, c1, (cbx_fp)0.0, h0, h1, (cbx_fp)0.0)
+      || crow_dfull(m0, m1, (cbx_fp)0.0, t, c0, c1, (cbx_fp)0.0, h0, h1, (cbx_fp)0.0);
+    predicate crow2_ok(cbx_affine2 *a, cbx_cbox2 *b, integer i) =
+      caxis2_ok(a->m[i][0], a->m[i][1], a->m[i][2], b->c[0], b->c[1], b->h[0], b->h[1]);
+
+    // ---------------------------------------------------------------------
     // Disks and ellipses: the image of the unit disk p0^2 + p1^2 <= 1 under
     // a 2D map, one axis (b0, b1) . p + t.  The code computes the 3D ball's
     // axis with a zero third entry (specs/cbx_ball.h: ball_axis, whose

@@ -19,6 +19,13 @@
  * axes, half-planes, the domain's edges, rotations, subnormals), then N
  * random cases drawn by test_exact's generator (rows 0 and 1, box axes 0
  * and 1), in binary64 and then in binary32 (values rounded to float).
+ * The center form (cbx_transform_cbox2, cbx_transform_cbox2f): the status
+ * against exact_util's cbox rules on the 3D embedding, the special
+ * outputs, every lost axis exactly c = 0, h = +inf, every other axis
+ * finite and holding the exact image of the 4 corners c_j -+ h_j (mpq,
+ * zero-coefficient columns dropped as the contract says), and the same
+ * bits as cbx_transform_cbox on the embedding (whose tightness test_cbox
+ * checks exactly).
  * Disks and ellipses (cbx_disk_box2, cbx_ellipse_box2 and their binary32
  * twins): on every axis the status and the special outputs as computed
  * from the domain (NaN -> CBX_EINVAL and the whole plane; an axis outside
@@ -282,6 +289,184 @@ static long family(xu_exact *x, const char *fam, runner run, long n, uint64_t se
     return t.failed;
 }
 
+/* ---- the center form --------------------------------------------------- */
+
+static int is_pinf(double d) { return d > 0 && isinf(d); }
+static int is_ninf(double d) { return d < 0 && isinf(d); }
+
+typedef struct ctally { long cases, failed, checks, axes, status[4]; } ctally;
+
+/* The 4 corners of axis i of the (dropped) box, exactly, inside
+ * [oc - oh, oc + oh]. */
+static int cbox2_corners_in(const double m[3], const cbx_cbox *d, double oc, double oh)
+{
+    mpq_t v, x, lo, hi, q;
+    int k, j, ok = 1;
+    mpq_inits(v, x, lo, hi, q, NULL);
+    mpq_set_d(lo, oc);
+    mpq_set_d(q, oh);
+    mpq_set(hi, lo);
+    mpq_sub(lo, lo, q);
+    mpq_add(hi, hi, q);
+    for (k = 0; k < 4 && ok; k++) {
+        mpq_set_d(v, m[2]);
+        for (j = 0; j < 2; j++) {
+            mpq_set_d(x, d->c[j]);
+            mpq_set_d(q, d->h[j]);
+            if ((k >> j) & 1) mpq_add(x, x, q);
+            else mpq_sub(x, x, q);
+            mpq_set_d(q, m[j]);
+            mpq_mul(x, x, q);
+            mpq_add(v, v, x);
+        }
+        ok = mpq_cmp(lo, v) <= 0 && mpq_cmp(v, hi) <= 0;
+    }
+    mpq_clears(v, x, lo, hi, q, NULL);
+    return ok;
+}
+
+/* One case: m[i] = {m_i0, m_i1, t_i}, c, h (values of the format). */
+static void run_cbox(ctally *t, int f32, const double m[2][3], const double c[2], const double h[2],
+                     const char *what)
+{
+    const char *fam = f32 ? "cbx_transform_cbox2f" : "cbx_transform_cbox2";
+    cbx_affine a3;
+    cbx_cbox b3;
+    double oc[2], oh[2], rc[2], rh[2];
+    cbx_status got, ref, ipst, want;
+    int i, j, same_in, same_ip;
+    char why[160];
+    why[0] = 0;
+    memset(&a3, 0, sizeof a3);
+    memset(&b3, 0, sizeof b3);
+    for (i = 0; i < 2; i++) {
+        a3.m[i][0] = m[i][0]; a3.m[i][1] = m[i][1]; a3.m[i][3] = m[i][2];
+        b3.c[i] = c[i]; b3.h[i] = h[i];
+    }
+    if (f32) {
+        cbx_affine2f a, a0;
+        cbx_cbox2f b, b0, o, ip;
+        cbx_affinef a3f;
+        cbx_cboxf b3f, r3f;
+        memset(&a3f, 0, sizeof a3f);
+        memset(&b3f, 0, sizeof b3f);
+        for (i = 0; i < 2; i++) {
+            for (j = 0; j < 3; j++) a.m[i][j] = (float)m[i][j];
+            b.c[i] = (float)c[i]; b.h[i] = (float)h[i];
+            a3f.m[i][0] = a.m[i][0]; a3f.m[i][1] = a.m[i][1]; a3f.m[i][3] = a.m[i][2];
+            b3f.c[i] = b.c[i]; b3f.h[i] = b.h[i];
+        }
+        a0 = a; b0 = b;
+        memset(&o, 0xff, sizeof o);
+        got = cbx_transform_cbox2f(&a, &b, &o);
+        ref = cbx_transform_cboxf(&a3f, &b3f, &r3f);
+        same_in = !memcmp(&a, &a0, sizeof a) && !memcmp(&b, &b0, sizeof b);
+        ip = b;
+        ipst = cbx_transform_cbox2f(&a, &ip, &ip);
+        same_ip = ipst == got && !memcmp(&ip, &o, sizeof o);
+        for (i = 0; i < 2; i++) { oc[i] = o.c[i]; oh[i] = o.h[i]; rc[i] = r3f.c[i]; rh[i] = r3f.h[i]; }
+    } else {
+        cbx_affine2 a, a0;
+        cbx_cbox2 b, b0, o, ip;
+        cbx_cbox r3;
+        for (i = 0; i < 2; i++) {
+            for (j = 0; j < 3; j++) a.m[i][j] = m[i][j];
+            b.c[i] = c[i]; b.h[i] = h[i];
+        }
+        a0 = a; b0 = b;
+        memset(&o, 0xff, sizeof o);
+        got = cbx_transform_cbox2(&a, &b, &o);
+        ref = cbx_transform_cbox(&a3, &b3, &r3);
+        same_in = !memcmp(&a, &a0, sizeof a) && !memcmp(&b, &b0, sizeof b);
+        ip = b;
+        ipst = cbx_transform_cbox2(&a, &ip, &ip);
+        same_ip = ipst == got && !memcmp(&ip, &o, sizeof o);
+        for (i = 0; i < 2; i++) { oc[i] = o.c[i]; oh[i] = o.h[i]; rc[i] = r3.c[i]; rh[i] = r3.h[i]; }
+    }
+    t->cases++;
+    t->checks += 4;
+    want = xu_cbox_expected_status(&a3, &b3);
+    if (got != want)
+        snprintf(why, sizeof why, "status %s, expected %s", cbx_status_name(got), cbx_status_name(want));
+    else if (got != ref || memcmp(oc, rc, sizeof oc) || memcmp(oh, rh, sizeof oh))
+        snprintf(why, sizeof why, "not the bits of cbx_transform_cbox on the 3D embedding");
+    else if (!same_in)
+        snprintf(why, sizeof why, "an input changed");
+    else if (!same_ip)
+        snprintf(why, sizeof why, "in place differs from the separate output");
+    if (!why[0] && xu_status_index(got) >= 0) t->status[xu_status_index(got)]++;
+    for (i = 0; i < 2 && !why[0]; i++) {
+        int kind;
+        cbx_cbox d;
+        t->checks++;
+        if (got == CBX_EINVAL || got == CBX_EMPTY) {
+            if (oc[i] != 0 || !(got == CBX_EINVAL ? is_pinf(oh[i]) : is_ninf(oh[i])))
+                snprintf(why, sizeof why, "axis %d: not the special output of %s", i, cbx_status_name(got));
+            continue;
+        }
+        kind = xu_cbox_axis_kind(&a3, &b3, i);
+        if (kind == XU_CAX_LOST) {
+            if (oc[i] != 0 || !is_pinf(oh[i]))
+                snprintf(why, sizeof why, "axis %d lost but not c = 0, h = +inf", i);
+            continue;
+        }
+        t->axes++;
+        if (!isfinite(oc[i]) || !isfinite(oh[i]) || oh[i] < 0) {
+            snprintf(why, sizeof why, "axis %d: c = %g, h = %g, not finite with h >= 0", i, oc[i], oh[i]);
+            continue;
+        }
+        xu_cbox_dropped(&a3, &b3, i, &d);
+        if (!cbox2_corners_in(m[i], &d, oc[i], oh[i]))
+            snprintf(why, sizeof why, "axis %d: a corner's exact image outside [c - h, c + h]", i);
+    }
+    if (why[0]) {
+        t->failed++;
+        fail(fam, what, why);
+    }
+}
+
+static long cboxes(int f32, long n, uint64_t seed, long *passed)
+{
+    ctally t;
+    xu_rng r;
+    long c;
+    int i;
+    char what[64];
+    memset(&t, 0, sizeof t);
+    for (c = 0; c < N_HARD; c++) {
+        double m[2][3], cc[2], hh[2];
+        int j;
+        for (i = 0; i < 2; i++) {
+            for (j = 0; j < 3; j++) m[i][j] = xu_round_fmt(hard[c].m[i][j]);
+            cc[i] = xu_round_fmt(hard[c].lo[i]);
+            hh[i] = xu_round_fmt(hard[c].hi[i] - hard[c].lo[i]);
+        }
+        run_cbox(&t, f32, (const double(*)[3])m, cc, hh, hard[c].name);
+    }
+    r.s = seed;
+    for (c = 0; c < n; c++) {
+        cbx_affine a;
+        cbx_box b;
+        double m[2][3], cc[2], hh[2];
+        xu_gen_case(&r, &a, &b);
+        for (i = 0; i < 2; i++) {
+            m[i][0] = a.m[i][0];
+            m[i][1] = a.m[i][1];
+            m[i][2] = a.m[i][3];
+            cc[i] = b.lo[i];
+            hh[i] = xu_round_fmt(b.hi[i] - b.lo[i]);
+        }
+        snprintf(what, sizeof what, "random cbox case %ld", c);
+        run_cbox(&t, f32, (const double(*)[3])m, cc, hh, what);
+    }
+    printf("test_plane: %s: %ld cases, %ld finite axes with their 4 corners in mpq, %ld checks, "
+           "%ld failed; statuses OK %ld, EMPTY %ld, EINVAL %ld, ERANGE %ld\n",
+           f32 ? "cbx_transform_cbox2f" : "cbx_transform_cbox2", t.cases, t.axes, t.checks, t.failed,
+           t.status[0], t.status[1], t.status[2], t.status[3]);
+    *passed += t.cases - t.failed;
+    return t.failed;
+}
+
 /* ---- disks and ellipses ---------------------------------------------- */
 
 typedef struct ballfmt {
@@ -302,8 +487,6 @@ typedef struct balltally {
     double max_units;           /* largest end excess, units of u (|t| + sqrt s) + eta */
 } balltally;
 
-static int is_pinf(double d) { return d > 0 && isinf(d); }
-static int is_ninf(double d) { return d < 0 && isinf(d); }
 
 /* One in-domain axis: containment and the proven tightness of both ends,
  * exactly; 0 if both hold. */
@@ -610,13 +793,17 @@ int main(int argc, char **argv)
     xu_exact x;
     long failed = 0, passed = 0;
     xu_init(&x);
-    printf("test_plane: the 2D family (boxes, disks, ellipses; both formats) against exact "
+    printf("test_plane: the 2D family (boxes in both forms, disks, ellipses; both formats) against exact "
            "rationals, N = %ld, seed = %llu\n", n,
            (unsigned long long)seed);
     xu_set_format(&xu_binary64);
     failed += family(&x, "cbx_transform_box2 (binary64)", run64, n, seed, &passed);
     xu_set_format(&xu_binary32);
     failed += family(&x, "cbx_transform_box2f (binary32)", run32, n, seed + 1, &passed);
+    xu_set_format(&xu_binary64);
+    failed += cboxes(0, n / 2, seed + 4, &passed);
+    xu_set_format(&xu_binary32);
+    failed += cboxes(1, n / 2, seed + 5, &passed);
     xu_set_format(&xu_binary64);
     failed += balls(&x, &bf64, n / 2, seed + 2, &passed);
     xu_set_format(&xu_binary32);

@@ -197,3 +197,76 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
     /*@ assert cs2: caxis_sound_s(out->c[2], out->h[2], a20, a21, a22, a23, c0, c1, c2, h0, h1, h2); */
     return (r0.ok && r1.ok && r2.ok) ? CBX_OK : CBX_ERANGE;
 }
+
+
+/* ---- the center/half-diagonal form of the plane (specs/cbx_plane.h) ----
+ * Each axis is the 3D axis function with a zero third column and
+ * c_2 = h_2 = 0. */
+
+/*@ requires \valid_read(a) && \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox2_has_nan(a, in);
+*/
+static int cbox2_any_nan(const cbx_affine2 *a, const cbx_cbox2 *in)
+{
+    return aff2_any_nan(a) | cbx_is_nan(in->c[0]) | cbx_is_nan(in->c[1]) | cbx_is_nan(in->h[0])
+           | cbx_is_nan(in->h[1]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox2_empty(in);
+*/
+static int cbox2_any_negative(const cbx_cbox2 *in)
+{
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1]);
+}
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures cwhole2(out);
+*/
+static void cbox2_set_whole(cbx_cbox2 *out)
+{
+    out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
+    out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
+}
+
+/*@ requires \valid(out);
+    assigns *out;
+    ensures cempty2(out);
+*/
+static void cbox2_set_empty(cbx_cbox2 *out)
+{
+    out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
+    out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
+}
+
+cbx_status cbx_transform_cbox2(const cbx_affine2 *a, const cbx_cbox2 *in, cbx_cbox2 *out)
+{
+    if (cbox2_any_nan(a, in)) {
+        cbox2_set_whole(out);
+        return CBX_EINVAL;
+    }
+    if (cbox2_any_negative(in)) {
+        cbox2_set_empty(out);
+        return CBX_EMPTY;
+    }
+    cbx_fp z = CBX_C(0.0);
+    cbx_fp c0 = in->c[0], c1 = in->c[1];
+    cbx_fp h0 = in->h[0], h1 = in->h[1];
+    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2];
+    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2];
+    cbox_axis_result r0 = cbox_transform_axis(a00, a01, z, a02, c0, c1, z, h0, h1, z);
+    cbox_axis_result r1 = cbox_transform_axis(a10, a11, z, a12, c0, c1, z, h0, h1, z);
+    out->c[0] = r0.c; out->h[0] = r0.h;
+    out->c[1] = r1.c; out->h[1] = r1.h;
+    /*@ assert same_in: \at(a->m[0][0], Pre) == a00 && \at(a->m[0][1], Pre) == a01
+          && \at(a->m[0][2], Pre) == a02 && \at(a->m[1][0], Pre) == a10
+          && \at(a->m[1][1], Pre) == a11 && \at(a->m[1][2], Pre) == a12
+          && \at(in->c[0], Pre) == c0 && \at(in->c[1], Pre) == c1
+          && \at(in->h[0], Pre) == h0 && \at(in->h[1], Pre) == h1; */
+    /*@ assert same_out: out->c[0] == r0.c && out->h[0] == r0.h
+          && out->c[1] == r1.c && out->h[1] == r1.h; */
+    return (r0.ok && r1.ok) ? CBX_OK : CBX_ERANGE;
+}
