@@ -5,8 +5,8 @@
 #
 # SECONDS: time per harness (default 60), passed to -max_total_time.
 # HARNESS: any of transform_box transform_cbox box_to_cbox cbox_to_box
-#          sphere_box ellipsoid_box gltf (default: all seven, one after the
-#          other).
+#          sphere_box ellipsoid_box plane gltf (default: all eight, one after
+#          the other).  plane (tests/fuzz/fuzz_plane.c): the 2D family.
 #
 # gltf (tests/fuzz/fuzz_gltf.c): the scene tool's glTF reader
 # (tools/certbox/gltf.c) on arbitrary file contents, against the exact oracle
@@ -39,7 +39,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT" || exit 2
 SECS=${1:-60}
 [ $# -gt 0 ] && shift
-ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box gltf"
+ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane gltf"
 GLTFDIR=/usr/share/assimp/models/glTF2
 # the gltf harness's seeds (self-contained files: GLB, data: URIs; and a few
 # refused ones)

@@ -339,6 +339,35 @@ static void ellipsoid_box(void)
     seed(H, "dbl-max-center", 0x00, 15, DBL_MAX, 0., 0., 1., 1., 1., ROT_ID);
 }
 
+/* fuzz_plane: control bits 0..1 choose the function (box2, cbox2, disk,
+ * ellipse), then 10 doubles (tests/fuzz/fuzz_plane.c). */
+static void plane(void)
+{
+    const char *H = "plane";
+    seed(H, "box2-identity", 0x00, 10, 1, 0, 0, 0, 1, 0, -1, 2, -3, 4);
+    seed(H, "box2-rotation", 0x00, 10, 0.6, -0.8, 5, 0.8, 0.6, -5, -1, 1, 0.5, 2);
+    seed(H, "box2-cancel", 0x0c, 10, 0.1, 0.7, 0, -3, 1e-3, 0, 3, 2, 1e10, -1e10);
+    seed(H, "box2-edges", 0x00, 10, 0x1p509, -0x1p509, 0x1p1018, 1, 1, -0x1p1018,
+         -0x1p509, 0x1p509, -1, 1);
+    seed(H, "box2-halfplane", 0x00, 10, 1, 1, 0, -1, 2, 0, 2, INF, 0, 1);
+    seed(H, "box2-empty", 0x00, 10, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1);
+    seed(H, "box2-nan", 0x00, 10, 1, NaN, 0, 0, 1, 0, 0, 1, 0, 1);
+    seed(H, "cbox2-plain", 0x01, 10, 2, 1, 3, -1, 0.5, 0, 1, 0.25, -2, 3);
+    seed(H, "cbox2-zero-column-inf", 0x01, 10, 0, 1, 0, 1, 0, 0, INF, INF, 1, 1);
+    seed(H, "cbox2-negative-h", 0x01, 10, 1, 0, 0, 0, 1, 0, 0, -1, 0, 1);
+    seed(H, "cbox2-edges", 0x05, 10, P509U, 1, 0, 1, 1, P1018U, 0x1p509, 0x1p509, 1, 1);
+    seed(H, "disk-unit", 0x02, 10, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0);
+    seed(H, "disk-pythagorean", 0x02, 10, 3, 4, 0.1, -5, 12, -7, 0, 0, 0, 0);
+    seed(H, "disk-edges", 0x02, 10, 0x1p509, -0x1p509, 0x1p1018, P509U, 0, 0, 0, 0, 0, 0);
+    seed(H, "disk-tiny", 0x02, 10, TINY, TINY, 0, 0x1p-600, 0x1p-601, 1e-300, 0, 0, 0, 0);
+    seed(H, "disk-inf-nan", 0x02, 10, INF, 0, 0, 1, NaN, 1, 0, 0, 0, 0);
+    seed(H, "ellipse-unit", 0x03, 10, 0, 0, 1, 1, 1, 0, 0, 1, 0, 0);
+    seed(H, "ellipse-rotated", 0x03, 10, 5, -5, 3, 0.5, 0.6, -0.8, 0.8, 0.6, 0, 0);
+    seed(H, "ellipse-edges", 0x03, 10, 0x1p1018, 0, 0x1p254, P254U, 0x1p254, -1, 1, 1, 0, 0);
+    seed(H, "ellipse-negative-radius", 0x03, 10, 0, 0, -2, 0, 1, 0, 0, 1, 0, 0);
+    seed(H, "ellipse-nan", 0x03, 10, 0, 0, 1, 1, NaN, 0, 0, 1, 0, 0);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -353,6 +382,7 @@ int main(int argc, char **argv)
     cbox_to_box();
     sphere_box();
     ellipsoid_box();
+    plane();
     printf("make_corpus: %d seeds written under %s\n", nwritten, outdir);
     return 0;
 }
