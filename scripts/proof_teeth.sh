@@ -27,7 +27,7 @@ case_() {
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
   fam=64; case $tu in *_f.c) fam=32;; esac
-  (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
+  (cd "$d" && frama-c $(teeth_incs "$d") "$tu" \
      -wp -wp-rte $split -wp-prover "cvc4r$fam" -wp-timeout 10 -wp-par 1 \
      -wp-cache none -wp-fct "$fct" ${props:+-wp-prop "$props"} > "$d/wp.log" 2>&1) || true
   # unproved: "[wp] [Failed] Goal G" (several provers) or "[wp] [PROVER] Goal G : Timeout" (one)
@@ -76,6 +76,11 @@ case_ motion-full-whole src/f64/cbx_motion.c mot_axis_union proofs/all.c sound s
 case_ sphere-radius-doubled src/algo/cbx_sphere.c ball_axis_bounds proofs/all.c lh,rn,g,ta,tb,tight 'tight\|_ta\|_tb\|_g' \
   "    conv_res lh = cbx_c2b(t, r);" \
   "    conv_res lh = cbx_c2b(t, cbx_add_rn(r, r));" - &
+# 9. the 2D box: CBX_OK whatever the rows (a lost axis must not read OK:
+#    the status postcondition ok_iff must fail)
+case_ plane-status-ok src/algo/cbx_interval.c cbx_transform_box2 proofs/all.c same_in,same_out,ok_iff ok_iff \
+  "    return (r0.ok && r1.ok) ? CBX_OK : CBX_ERANGE;" \
+  "    return CBX_OK;" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -18,7 +18,7 @@ case_() {
   name=$1; file=$2; fct=$3; tu=$4; old=$5; new=$6
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
-  (cd "$d" && frama-c -cpp-extra-args=-I"$d/src" -cpp-extra-args=-I"$d/specs" "$tu" \
+  (cd "$d" && frama-c $(teeth_incs "$d") "$tu" \
      -wp -wp-rte -wp-smoke-tests ${CBX_SMOKE_OPTS:-} -wp-prover "cvc4r$(case $tu in *_f.c) echo 32;; *) echo 64;; esac)" -wp-steps "$STEPS" -wp-smoke-timeout 30 \
      -wp-par 2 -wp-cache none $NOGOALS -wp-fct "$fct" > "$d/smoke.log" 2>&1) || true
   # WP prints [Passed] for a smoke test the prover could not refute (the

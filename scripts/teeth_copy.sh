@@ -7,11 +7,17 @@ teeth_setup() {
   WHY3CONFIG=$(sh proofs/setup.sh "$B/why3")
   export WHY3CONFIG
 }
-# teeth_copy DIR FILE OLD NEW: a scratch copy of src/, specs/ and proofs/ in
-# DIR, with OLD replaced by NEW in DIR/FILE (OLD must occur exactly once).
+# teeth_incs DIR: Frama-C's include options for the copy in DIR (the
+# library's folders, scripts/incs.sh, and specs/).
+teeth_incs() {
+  for i in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$1" "${i#-I}"; done
+}
+# teeth_copy DIR FILE OLD NEW: a scratch copy of include/, src/, specs/ and
+# proofs/ in DIR, with OLD replaced by NEW in DIR/FILE (OLD must occur
+# exactly once).
 teeth_copy() {
   mkdir -p "$1"
-  cp -r src specs proofs "$1"/
+  cp -r include src specs proofs "$1"/
   python3 - "$1/$2" "$3" "$4" <<'PY'
 import sys
 p, old, new = sys.argv[1:4]
