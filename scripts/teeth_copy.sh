@@ -1,7 +1,9 @@
 # Sourced by scripts/smoke_teeth.sh and scripts/proof_teeth.sh.
-# teeth_setup NAME: B=build/NAME (emptied), WHY3CONFIG for the provers.
+# teeth_setup NAME: B=build/NAME (emptied), WHY3CONFIG for the provers,
+# TEETH_ROOT the checkout.
 teeth_setup() {
-  B=$(pwd)/build/$1
+  TEETH_ROOT=$(pwd)
+  B=$TEETH_ROOT/build/$1
   rm -rf "$B"
   mkdir -p "$B"
   WHY3CONFIG=$(sh proofs/setup.sh "$B/why3")
@@ -10,7 +12,7 @@ teeth_setup() {
 # teeth_incs DIR: Frama-C's include options for the copy in DIR (the
 # library's folders, scripts/incs.sh, and specs/).
 teeth_incs() {
-  for i in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$1" "${i#-I}"; done
+  for i in $(sh "$TEETH_ROOT/scripts/incs.sh") -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$1" "${i#-I}"; done
 }
 # teeth_copy DIR FILE OLD NEW: a scratch copy of include/, src/, specs/ and
 # proofs/ in DIR, with OLD replaced by NEW in DIR/FILE (OLD must occur
