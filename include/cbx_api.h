@@ -164,6 +164,49 @@ cbx_status cbx_transform_box2(const cbx_affine2 *a, const cbx_box2 *in, cbx_box2
 */
 cbx_status cbx_transform_cbox2(const cbx_affine2 *a, const cbx_cbox2 *in, cbx_cbox2 *out);
 
+/* The conversions of the plane, with cbx_box_to_cbox's and
+ * cbx_cbox_to_box's statuses, special outputs, domain and statement on
+ * each of their two axes (b2c_v, c2b_v: specs/cbx_spec.h). */
+/*@ requires valid: \valid_read(in) && \valid(out);
+    requires sep: \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes box2_nan(in);
+      ensures \result == CBX_EINVAL && cwhole2(out);
+    behavior empty_input:
+      assumes !box2_nan(in) && is_empty2(in);
+      ensures \result == CBX_EMPTY && cempty2(out);
+    behavior box_input:
+      assumes !box2_nan(in) && !is_empty2(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures ax0: b2c_v(in->lo[0], in->hi[0], out->c[0], out->h[0]);
+      ensures ax1: b2c_v(in->lo[1], in->hi[1], out->c[1], out->h[1]);
+      ensures ok_iff: \result == CBX_OK <==> (conv_in(in->lo[0], in->hi[0]) && conv_in(in->lo[1], in->hi[1]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_box2_to_cbox2(const cbx_box2 *in, cbx_cbox2 *out);
+
+/*@ requires valid: \valid_read(in) && \valid(out);
+    requires sep: \separated(out, in);
+    assigns *out;
+    behavior nan_input:
+      assumes cbox2_nan(in);
+      ensures \result == CBX_EINVAL && whole_plane(out);
+    behavior empty_input:
+      assumes !cbox2_nan(in) && cbox2_empty(in);
+      ensures \result == CBX_EMPTY && empty_out2(out);
+    behavior box_input:
+      assumes !cbox2_nan(in) && !cbox2_empty(in);
+      ensures \result == CBX_OK || \result == CBX_ERANGE;
+      ensures ax0: c2b_v(in->c[0], in->h[0], out->lo[0], out->hi[0]);
+      ensures ax1: c2b_v(in->c[1], in->h[1], out->lo[1], out->hi[1]);
+      ensures ok_iff: \result == CBX_OK <==> (conv_in(in->c[0], in->h[0]) && conv_in(in->c[1], in->h[1]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_cbox2_to_box2(const cbx_cbox2 *in, cbx_box2 *out);
+
 /* cbx_disk_box2: the image of the unit disk {p : p_0^2 + p_1^2 <= 1} under
  * the 2D map: axis i is m[i][2] -+ sqrt(m[i][0]^2 + m[i][1]^2), rounded
  * outward (the dual conic; the sphere's kernel with a zero third entry).

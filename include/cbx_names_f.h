@@ -67,6 +67,9 @@
 #define crow_ok crow_ok_f
 #define conv_dom conv_dom_f
 #define conv_gap conv_gap_f
+#define conv_in conv_in_f
+#define b2c_v b2c_v_f
+#define c2b_v c2b_v_f
 #define b2c_dom b2c_dom_f
 #define c2b_dom c2b_dom_f
 #define b2c_ok b2c_ok_f
@@ -171,6 +174,9 @@
 #undef crow_ok
 #undef conv_dom
 #undef conv_gap
+#undef conv_in
+#undef b2c_v
+#undef c2b_v
 #undef b2c_dom
 #undef c2b_dom
 #undef b2c_ok

@@ -169,6 +169,8 @@
 #define cbx_box2 cbx_box2f
 #define cbx_cbox2 cbx_cbox2f
 #define cbx_transform_cbox2 cbx_transform_cbox2f
+#define cbx_box2_to_cbox2 cbx_box2_to_cbox2f
+#define cbx_cbox2_to_box2 cbx_cbox2_to_box2f
 #define cbx_transform_box2 cbx_transform_box2f
 #define cbx_disk_box2 cbx_disk_box2f
 #define cbx_ellipse_box2 cbx_ellipse_box2f

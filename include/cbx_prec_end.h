@@ -22,6 +22,8 @@
 #undef cbx_box2
 #undef cbx_cbox2
 #undef cbx_transform_cbox2
+#undef cbx_box2_to_cbox2
+#undef cbx_cbox2_to_box2
 #undef cbx_transform_box2
 #undef cbx_disk_box2
 #undef cbx_ellipse_box2

@@ -416,30 +416,35 @@
     // exact end (binary32: 16u and 2^-141), x, y the axis' two inputs.
     logic real conv_gap(real x, real y) = CBX_U16 * (\abs(x) + \abs(y)) + CBX_ETA256;
 
+    // One axis of a conversion, on values (the 3D and the 2D forms share
+    // it): the input axis (x, y) = (lo, hi) or (c, h) in the domain (status
+    // CBX_OK), and the output (p, q) = (c, h) or (lo, hi).
+    predicate conv_in(cbx_fp x, cbx_fp y) = \is_finite(x) && \is_finite(y) && conv_dom(x, y);
+    // box -> cbox: [c - h, c + h] contains [lo, hi], each end within
+    // conv_gap; outside the domain c = 0, h = +inf (the whole line).
+    predicate b2c_v(cbx_fp lo, cbx_fp hi, cbx_fp c, cbx_fp h) =
+      (conv_in(lo, hi) ==>
+         (\is_finite(c) && \is_finite(h) && c - h <= lo && hi <= c + h
+          && lo - conv_gap(lo, hi) <= c - h && c + h <= hi + conv_gap(lo, hi)))
+      && (!conv_in(lo, hi) ==> c == 0 && \is_plus_infinity(h));
+    // cbox -> box: [lo, hi] contains [c - h, c + h], each end within
+    // conv_gap; outside the domain [-inf, +inf].
+    predicate c2b_v(cbx_fp c, cbx_fp h, cbx_fp lo, cbx_fp hi) =
+      (conv_in(c, h) ==>
+         (\is_finite(lo) && \is_finite(hi) && lo <= c - h && c + h <= hi
+          && (c - h) - conv_gap(c, h) <= lo && hi <= (c + h) + conv_gap(c, h)))
+      && (!conv_in(c, h) ==> \is_minus_infinity(lo) && \is_plus_infinity(hi));
+
     // Every axis of the input in the conversions' domain: status CBX_OK.
-    predicate b2c_dom(cbx_box *in, integer i) =
-      \is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i]);
-    predicate c2b_dom(cbx_cbox *in, integer i) =
-      \is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i]);
+    predicate b2c_dom(cbx_box *in, integer i) = conv_in(in->lo[i], in->hi[i]);
+    predicate c2b_dom(cbx_cbox *in, integer i) = conv_in(in->c[i], in->h[i]);
     predicate b2c_ok(cbx_box *in) = b2c_dom(in, 0) && b2c_dom(in, 1) && b2c_dom(in, 2);
     predicate c2b_ok(cbx_cbox *in) = c2b_dom(in, 0) && c2b_dom(in, 1) && c2b_dom(in, 2);
 
     predicate b2c_axis(cbx_box *in, cbx_cbox *out, integer i) =
-      ((\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
-         (\is_finite(out->c[i]) && \is_finite(out->h[i])
-          && out->c[i] - out->h[i] <= in->lo[i] && in->hi[i] <= out->c[i] + out->h[i]
-          && in->lo[i] - conv_gap(in->lo[i], in->hi[i]) <= out->c[i] - out->h[i]
-          && out->c[i] + out->h[i] <= in->hi[i] + conv_gap(in->lo[i], in->hi[i])))
-      && (!(\is_finite(in->lo[i]) && \is_finite(in->hi[i]) && conv_dom(in->lo[i], in->hi[i])) ==>
-          cwhole_axis(out, i));
+      b2c_v(in->lo[i], in->hi[i], out->c[i], out->h[i]);
     predicate c2b_axis(cbx_cbox *in, cbx_box *out, integer i) =
-      ((\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
-         (\is_finite(out->lo[i]) && \is_finite(out->hi[i])
-          && out->lo[i] <= in->c[i] - in->h[i] && in->c[i] + in->h[i] <= out->hi[i]
-          && (in->c[i] - in->h[i]) - conv_gap(in->c[i], in->h[i]) <= out->lo[i]
-          && out->hi[i] <= (in->c[i] + in->h[i]) + conv_gap(in->c[i], in->h[i])))
-      && (!(\is_finite(in->c[i]) && \is_finite(in->h[i]) && conv_dom(in->c[i], in->h[i])) ==>
-          whole_axis(out, i));
+      c2b_v(in->c[i], in->h[i], out->lo[i], out->hi[i]);
 */
 
 /*@ // ---------------------------------------------------------------------

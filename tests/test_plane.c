@@ -26,6 +26,11 @@
  * zero-coefficient columns dropped as the contract says), and the same
  * bits as cbx_transform_cbox on the embedding (whose tightness test_cbox
  * checks exactly).
+ * The conversions (cbx_box2_to_cbox2, cbx_cbox2_to_box2 and their binary32
+ * twins): the status and special outputs from the domain, each converted
+ * axis holding its input axis and within the proven 16 u (|x| + |y|) +
+ * 2^-1066 (binary32: 2^-141) of it, both in mpq, and the same bits as the
+ * 3D conversions on the embedding.
  * Disks and ellipses (cbx_disk_box2, cbx_ellipse_box2 and their binary32
  * twins): on every axis the status and the special outputs as computed
  * from the domain (NaN -> CBX_EINVAL and the whole plane; an axis outside
@@ -467,6 +472,205 @@ static long cboxes(int f32, long n, uint64_t seed, long *passed)
     return t.failed;
 }
 
+/* ---- the conversions ---------------------------------------------------- */
+
+/* In mpq: [P0, P1] holds [X0, X1] and each end is within the proven gap
+ * 16 u (|a| + |b|) + 2^-1066 of it (binary32: u = 2^-24, 2^-141); a, b
+ * the axis' two inputs. */
+static int conv_within(const mpq_t P0, const mpq_t P1, const mpq_t X0, const mpq_t X1, double a,
+                       double b, int f32)
+{
+    mpq_t G, q;
+    int ok;
+    mpq_inits(G, q, NULL);
+    mpq_set_d(G, fabs(a));
+    mpq_set_d(q, fabs(b));
+    mpq_add(G, G, q);
+    mpq_set_d(q, ldexp(16.0, f32 ? -24 : -53));
+    mpq_mul(G, G, q);
+    mpq_set_d(q, ldexp(1.0, f32 ? -141 : -1066));
+    mpq_add(G, G, q);
+    ok = mpq_cmp(P0, X0) <= 0 && mpq_cmp(X1, P1) <= 0;
+    mpq_sub(q, X0, P0);
+    ok = ok && mpq_cmp(q, G) <= 0;
+    mpq_sub(q, P1, X1);
+    ok = ok && mpq_cmp(q, G) <= 0;
+    mpq_clears(G, q, NULL);
+    return ok;
+}
+
+static int conv_dom_ok(double x, double y, int f32)
+{
+    double r = f32 ? 0x1p123 : 0x1p1019;
+    return fabs(x) <= r && fabs(y) <= r;
+}
+
+/* box -> cbox (dir 0) or cbox -> box (dir 1) of one input (u, v) = (lo, hi)
+ * or (c, h) per axis, in the current format. */
+static void run_conv(ctally *t, int f32, int dir, const double u[2], const double v[2], const char *what)
+{
+    const char *fam = dir ? (f32 ? "cbx_cbox2_to_box2f" : "cbx_cbox2_to_box2")
+                          : (f32 ? "cbx_box2_to_cbox2f" : "cbx_box2_to_cbox2");
+    double p[2], q[2], rp[2], rq[2];
+    cbx_status got, ref, want;
+    int i, nan = 0, empty = 0, dom = 1;
+    char why[160];
+    why[0] = 0;
+    for (i = 0; i < 2; i++) {
+        nan |= xu_is_nan(u[i]) || xu_is_nan(v[i]);
+        empty |= dir ? v[i] < 0 : (v[i] < u[i] || is_pinf(u[i]) || is_ninf(v[i]));
+        dom &= conv_dom_ok(u[i], v[i], f32);
+    }
+    want = nan ? CBX_EINVAL : empty ? CBX_EMPTY : dom ? CBX_OK : CBX_ERANGE;
+    if (f32) {
+        cbx_box2f b;
+        cbx_cbox2f c;
+        cbx_boxf b3;
+        cbx_cboxf c3;
+        for (i = 0; i < 3; i++) { b3.lo[i] = b3.hi[i] = 0; c3.c[i] = c3.h[i] = 0; }
+        for (i = 0; i < 2; i++) {
+            b.lo[i] = b3.lo[i] = c.c[i] = c3.c[i] = (float)u[i];
+            b.hi[i] = b3.hi[i] = c.h[i] = c3.h[i] = (float)v[i];
+        }
+        if (dir) {
+            cbx_box2f o;
+            got = cbx_cbox2_to_box2f(&c, &o);
+            ref = cbx_cbox_to_boxf(&c3, &b3);
+            for (i = 0; i < 2; i++) { p[i] = o.lo[i]; q[i] = o.hi[i]; rp[i] = b3.lo[i]; rq[i] = b3.hi[i]; }
+        } else {
+            cbx_cbox2f o;
+            got = cbx_box2_to_cbox2f(&b, &o);
+            ref = cbx_box_to_cboxf(&b3, &c3);
+            for (i = 0; i < 2; i++) { p[i] = o.c[i]; q[i] = o.h[i]; rp[i] = c3.c[i]; rq[i] = c3.h[i]; }
+        }
+    } else {
+        cbx_box2 b;
+        cbx_cbox2 c;
+        cbx_box b3;
+        cbx_cbox c3;
+        for (i = 0; i < 3; i++) { b3.lo[i] = b3.hi[i] = 0; c3.c[i] = c3.h[i] = 0; }
+        for (i = 0; i < 2; i++) {
+            b.lo[i] = b3.lo[i] = c.c[i] = c3.c[i] = u[i];
+            b.hi[i] = b3.hi[i] = c.h[i] = c3.h[i] = v[i];
+        }
+        if (dir) {
+            cbx_box2 o;
+            got = cbx_cbox2_to_box2(&c, &o);
+            ref = cbx_cbox_to_box(&c3, &b3);
+            for (i = 0; i < 2; i++) { p[i] = o.lo[i]; q[i] = o.hi[i]; rp[i] = b3.lo[i]; rq[i] = b3.hi[i]; }
+        } else {
+            cbx_cbox2 o;
+            got = cbx_box2_to_cbox2(&b, &o);
+            ref = cbx_box_to_cbox(&b3, &c3);
+            for (i = 0; i < 2; i++) { p[i] = o.c[i]; q[i] = o.h[i]; rp[i] = c3.c[i]; rq[i] = c3.h[i]; }
+        }
+    }
+    t->cases++;
+    t->checks += 2;
+    if (got != want)
+        snprintf(why, sizeof why, "status %s, expected %s", cbx_status_name(got), cbx_status_name(want));
+    else if (got != ref || memcmp(p, rp, sizeof p) || memcmp(q, rq, sizeof q))
+        snprintf(why, sizeof why, "not the bits of the 3D conversion on the embedding");
+    if (!why[0] && xu_status_index(got) >= 0) t->status[xu_status_index(got)]++;
+    for (i = 0; i < 2 && !why[0]; i++) {
+        int in = !nan && !empty && conv_dom_ok(u[i], v[i], f32) && isfinite(u[i]) && isfinite(v[i]);
+        t->checks++;
+        if (nan || empty) {
+            int ok = dir ? (nan ? is_ninf(p[i]) && is_pinf(q[i]) : is_pinf(p[i]) && is_ninf(q[i]))
+                         : (p[i] == 0 && (nan ? is_pinf(q[i]) : is_ninf(q[i])));
+            if (!ok) snprintf(why, sizeof why, "axis %d: not the special output of %s", i, cbx_status_name(got));
+            continue;
+        }
+        if (!in) {
+            if (dir ? !(is_ninf(p[i]) && is_pinf(q[i])) : !(p[i] == 0 && is_pinf(q[i])))
+                snprintf(why, sizeof why, "axis %d outside the domain but not the whole line", i);
+            continue;
+        }
+        t->axes++;
+        if (!isfinite(p[i]) || !isfinite(q[i])) {
+            snprintf(why, sizeof why, "axis %d in the domain but not finite", i);
+            continue;
+        }
+        {
+            /* dir 1: [lo, hi] = [p, q] holds [c - h, c + h]; dir 0:
+             * [c - h, c + h] (c = p, h = q) holds [lo, hi] = [u, v] */
+            mpq_t P0, P1, X0, X1, h;
+            int ok;
+            mpq_inits(P0, P1, X0, X1, h, NULL);
+            if (dir) {
+                mpq_set_d(P0, p[i]);
+                mpq_set_d(P1, q[i]);
+                mpq_set_d(h, v[i]);
+                mpq_set_d(X0, u[i]);
+                mpq_sub(X0, X0, h);
+                mpq_set_d(X1, u[i]);
+                mpq_add(X1, X1, h);
+            } else {
+                mpq_set_d(h, q[i]);
+                mpq_set_d(P0, p[i]);
+                mpq_sub(P0, P0, h);
+                mpq_set_d(P1, p[i]);
+                mpq_add(P1, P1, h);
+                mpq_set_d(X0, u[i]);
+                mpq_set_d(X1, v[i]);
+            }
+            ok = conv_within(P0, P1, X0, X1, u[i], v[i], f32);
+            mpq_clears(P0, P1, X0, X1, h, NULL);
+            if (!ok) snprintf(why, sizeof why, "axis %d: the output does not hold the input within the proven gap", i);
+        }
+    }
+    if (why[0]) {
+        t->failed++;
+        fail(fam, what, why);
+    }
+}
+
+static long convs(int f32, long n, uint64_t seed, long *passed)
+{
+    ctally tb, tc;
+    xu_rng r;
+    long c;
+    int i, k;
+    char what[64];
+    memset(&tb, 0, sizeof tb);
+    memset(&tc, 0, sizeof tc);
+    for (k = 0; k < N_HARD; k++) {
+        double u[2], v[2], h[2];
+        for (i = 0; i < 2; i++) {
+            u[i] = xu_round_fmt(hard[k].lo[i]);
+            v[i] = xu_round_fmt(hard[k].hi[i]);
+            h[i] = xu_round_fmt(hard[k].hi[i] - hard[k].lo[i]);
+        }
+        run_conv(&tb, f32, 0, u, v, hard[k].name);
+        run_conv(&tc, f32, 1, u, h, hard[k].name);
+    }
+    r.s = seed;
+    for (c = 0; c < n; c++) {
+        cbx_affine a;
+        cbx_box b;
+        double u[2], v[2], h[2];
+        xu_gen_case(&r, &a, &b);
+        for (i = 0; i < 2; i++) {
+            u[i] = b.lo[i];
+            v[i] = b.hi[i];
+            h[i] = xu_round_fmt(fabs(b.hi[i] - b.lo[i]) * (xu_rng_int(&r, 0, 19) ? 1.0 : -1.0));
+        }
+        snprintf(what, sizeof what, "random conversion %ld", c);
+        run_conv(&tb, f32, 0, u, v, what);
+        run_conv(&tc, f32, 1, u, h, what);
+    }
+    printf("test_plane: %s: %ld cases, %ld in-domain axes held exactly within the proven gap, %ld checks, "
+           "%ld failed; statuses OK %ld, EMPTY %ld, EINVAL %ld, ERANGE %ld\n",
+           f32 ? "cbx_box2_to_cbox2f" : "cbx_box2_to_cbox2", tb.cases, tb.axes, tb.checks, tb.failed,
+           tb.status[0], tb.status[1], tb.status[2], tb.status[3]);
+    printf("test_plane: %s: %ld cases, %ld in-domain axes held exactly within the proven gap, %ld checks, "
+           "%ld failed; statuses OK %ld, EMPTY %ld, EINVAL %ld, ERANGE %ld\n",
+           f32 ? "cbx_cbox2_to_box2f" : "cbx_cbox2_to_box2", tc.cases, tc.axes, tc.checks, tc.failed,
+           tc.status[0], tc.status[1], tc.status[2], tc.status[3]);
+    *passed += tb.cases - tb.failed + tc.cases - tc.failed;
+    return tb.failed + tc.failed;
+}
+
 /* ---- disks and ellipses ---------------------------------------------- */
 
 typedef struct ballfmt {
@@ -793,7 +997,7 @@ int main(int argc, char **argv)
     xu_exact x;
     long failed = 0, passed = 0;
     xu_init(&x);
-    printf("test_plane: the 2D family (boxes in both forms, disks, ellipses; both formats) against exact "
+    printf("test_plane: the 2D family (boxes in both forms, conversions, disks, ellipses; both formats) against exact "
            "rationals, N = %ld, seed = %llu\n", n,
            (unsigned long long)seed);
     xu_set_format(&xu_binary64);
@@ -804,6 +1008,10 @@ int main(int argc, char **argv)
     failed += cboxes(0, n / 2, seed + 4, &passed);
     xu_set_format(&xu_binary32);
     failed += cboxes(1, n / 2, seed + 5, &passed);
+    xu_set_format(&xu_binary64);
+    failed += convs(0, n / 2, seed + 6, &passed);
+    xu_set_format(&xu_binary32);
+    failed += convs(1, n / 2, seed + 7, &passed);
     xu_set_format(&xu_binary64);
     failed += balls(&x, &bf64, n / 2, seed + 2, &passed);
     xu_set_format(&xu_binary32);

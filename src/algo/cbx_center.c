@@ -129,15 +129,6 @@ static int cbox_any_nan(const cbx_affine *a, const cbx_cbox *in)
     return aff_any_nan(a) | cbox_any_nan_in(in);
 }
 
-/*@ requires \valid_read(in);
-    assigns \nothing;
-    ensures \result != 0 <==> cbox_empty(in);
-*/
-static int cbox_any_negative(const cbx_cbox *in)
-{
-    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1])
-           | cbx_is_inverted(CBX_C(0.0), in->h[2]);
-}
 
 /*@ requires \valid(out);
     assigns *out;
@@ -167,7 +158,7 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
         cbox_set_whole(out);
         return CBX_EINVAL;
     }
-    if (cbox_any_negative(in)) {
+    if (cbox_any_neg(in)) {
         cbox_set_empty(out);
         return CBX_EMPTY;
     }
@@ -209,18 +200,9 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
 */
 static int cbox2_any_nan(const cbx_affine2 *a, const cbx_cbox2 *in)
 {
-    return aff2_any_nan(a) | cbx_is_nan(in->c[0]) | cbx_is_nan(in->c[1]) | cbx_is_nan(in->h[0])
-           | cbx_is_nan(in->h[1]);
+    return aff2_any_nan(a) | cbox2_any_nan_in(in);
 }
 
-/*@ requires \valid_read(in);
-    assigns \nothing;
-    ensures \result != 0 <==> cbox2_empty(in);
-*/
-static int cbox2_any_negative(const cbx_cbox2 *in)
-{
-    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1]);
-}
 
 /*@ requires \valid(out);
     assigns *out;
@@ -248,7 +230,7 @@ cbx_status cbx_transform_cbox2(const cbx_affine2 *a, const cbx_cbox2 *in, cbx_cb
         cbox2_set_whole(out);
         return CBX_EINVAL;
     }
-    if (cbox2_any_negative(in)) {
+    if (cbox2_any_neg(in)) {
         cbox2_set_empty(out);
         return CBX_EMPTY;
     }

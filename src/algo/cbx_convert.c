@@ -57,30 +57,54 @@ static int conv_ok(cbx_fp x, cbx_fp y)
     return x >= -CBX_K(R19) && x <= CBX_K(R19) && y >= -CBX_K(R19) && y <= CBX_K(R19);
 }
 
-/*@ requires \valid(out);
-    requires i: 0 <= i <= 2;
-    assigns out->c[i], out->h[i];
-    ensures cwhole_axis(out, i);
-*/
-static void cwhole_set(cbx_cbox *out, int i)
-{
-    out->c[i] = CBX_C(0.0);
-    out->h[i] = cbx_pinf();
-}
+/* One axis of a conversion, on values (both forms of the plane and of
+ * space): the output ends and whether the axis was in the domain. */
+typedef struct conv_axis { cbx_fp a, b; int ok; } conv_axis;
 
-/* The input checks, each one predicate of the contract (one call in the
- * public functions keeps their goals small; box_any_nan, box_any_empty:
- * src/core/cbx_domain.h). */
-
-/*@ requires \valid_read(in);
+/* box -> cbox on one axis: the conversion in the domain, c = 0, h = +inf
+ * outside it. */
+/*@ requires pt: !\is_NaN(lo) && !\is_NaN(hi) && !no_point(lo, hi);
     assigns \nothing;
-    ensures \result != 0 <==> cbox_empty(in);
+    ensures ok: \result.ok != 0 <==> conv_in(lo, hi);
+    ensures ax: b2c_v(lo, hi, \result.a, \result.b);
 */
-static int cbox_any_neg(const cbx_cbox *in)
+static conv_axis b2c_one(cbx_fp lo, cbx_fp hi)
 {
-    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1])
-           | cbx_is_inverted(CBX_C(0.0), in->h[2]);
+    conv_axis r;
+    r.a = CBX_C(0.0);
+    r.b = cbx_pinf();
+    r.ok = conv_ok(lo, hi);
+    if (r.ok) {
+        conv_res k = b2c(lo, hi);
+        r.a = k.a;
+        r.b = k.b;
+    }
+    return r;
 }
+
+/* cbox -> box on one axis: the conversion in the domain, [-inf, +inf]
+ * outside it. */
+/*@ assigns \nothing;
+    ensures ok: \result.ok != 0 <==> conv_in(c, h);
+    ensures ax: c2b_v(c, h, \result.a, \result.b);
+*/
+static conv_axis c2b_one(cbx_fp c, cbx_fp h)
+{
+    conv_axis r;
+    r.a = cbx_ninf();
+    r.b = cbx_pinf();
+    r.ok = conv_ok(c, h);
+    if (r.ok) {
+        conv_res k = cbx_c2b(c, h);
+        r.a = k.a;
+        r.b = k.b;
+    }
+    return r;
+}
+
+/* The input checks (box_any_nan, box_any_empty, cbox_any_neg and their 2D
+ * forms) are in src/core/cbx_domain.h: each is one predicate of the
+ * contracts, and one call in the public functions keeps their goals small. */
 
 /* One axis of cbx_box_to_cbox: the conversion in the domain, the whole
  * line outside it; 1 when in the domain. */
@@ -93,14 +117,10 @@ static int cbox_any_neg(const cbx_cbox *in)
 */
 static int b2c_set(const cbx_box *in, cbx_cbox *out, int i)
 {
-    if (conv_ok(in->lo[i], in->hi[i])) {
-        conv_res r = b2c(in->lo[i], in->hi[i]);
-        out->c[i] = r.a;
-        out->h[i] = r.b;
-        return 1;
-    }
-    cwhole_set(out, i);
-    return 0;
+    conv_axis r = b2c_one(in->lo[i], in->hi[i]);
+    out->c[i] = r.a;
+    out->h[i] = r.b;
+    return r.ok;
 }
 
 cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
@@ -123,16 +143,6 @@ cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
 }
 
-/*@ requires \valid(out);
-    requires i: 0 <= i <= 2;
-    assigns out->lo[i], out->hi[i];
-    ensures whole_axis(out, i);
-*/
-static void whole_set(cbx_box *out, int i)
-{
-    out->lo[i] = cbx_ninf();
-    out->hi[i] = cbx_pinf();
-}
 
 /* One axis of cbx_cbox_to_box: the conversion in the domain, the whole
  * line outside it; 1 when in the domain. */
@@ -144,14 +154,10 @@ static void whole_set(cbx_box *out, int i)
 */
 static int c2b_set(const cbx_cbox *in, cbx_box *out, int i)
 {
-    if (conv_ok(in->c[i], in->h[i])) {
-        conv_res r = cbx_c2b(in->c[i], in->h[i]);
-        out->lo[i] = r.a;
-        out->hi[i] = r.b;
-        return 1;
-    }
-    whole_set(out, i);
-    return 0;
+    conv_axis r = c2b_one(in->c[i], in->h[i]);
+    out->lo[i] = r.a;
+    out->hi[i] = r.b;
+    return r.ok;
 }
 
 cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
@@ -168,4 +174,43 @@ cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
     int k1 = c2b_set(in, out, 1);
     int k2 = c2b_set(in, out, 2);
     return (k0 && k1 && k2) ? CBX_OK : CBX_ERANGE;
+}
+
+
+/* ---- the conversions of the plane (specs/cbx_plane.h) ------------------ */
+
+cbx_status cbx_box2_to_cbox2(const cbx_box2 *in, cbx_cbox2 *out)
+{
+    if (box2_any_nan(in)) {
+        out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
+        out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
+        return CBX_EINVAL;
+    }
+    if (plane_any_empty(in)) {
+        out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
+        out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
+        return CBX_EMPTY;
+    }
+    conv_axis r0 = b2c_one(in->lo[0], in->hi[0]);
+    conv_axis r1 = b2c_one(in->lo[1], in->hi[1]);
+    out->c[0] = r0.a; out->h[0] = r0.b;
+    out->c[1] = r1.a; out->h[1] = r1.b;
+    return (r0.ok && r1.ok) ? CBX_OK : CBX_ERANGE;
+}
+
+cbx_status cbx_cbox2_to_box2(const cbx_cbox2 *in, cbx_box2 *out)
+{
+    if (cbox2_any_nan_in(in)) {
+        set_whole2(out);
+        return CBX_EINVAL;
+    }
+    if (cbox2_any_neg(in)) {
+        set_empty2(out);
+        return CBX_EMPTY;
+    }
+    conv_axis r0 = c2b_one(in->c[0], in->h[0]);
+    conv_axis r1 = c2b_one(in->c[1], in->h[1]);
+    out->lo[0] = r0.a; out->hi[0] = r0.b;
+    out->lo[1] = r1.a; out->hi[1] = r1.b;
+    return (r0.ok && r1.ok) ? CBX_OK : CBX_ERANGE;
 }

@@ -202,6 +202,36 @@ static inline int plane_any_empty(const cbx_box2 *in)
     return cbx_no_point(in->lo[0], in->hi[0]) | cbx_no_point(in->lo[1], in->hi[1]);
 }
 
+/* The empty and NaN checks of the center forms (h < 0 on an axis is an
+ * empty box). */
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox_empty(in);
+*/
+static inline int cbox_any_neg(const cbx_cbox *in)
+{
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1])
+           | cbx_is_inverted(CBX_C(0.0), in->h[2]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox2_nan(in);
+*/
+static inline int cbox2_any_nan_in(const cbx_cbox2 *in)
+{
+    return cbx_is_nan(in->c[0]) | cbx_is_nan(in->c[1]) | cbx_is_nan(in->h[0]) | cbx_is_nan(in->h[1]);
+}
+
+/*@ requires \valid_read(in);
+    assigns \nothing;
+    ensures \result != 0 <==> cbox2_empty(in);
+*/
+static inline int cbox2_any_neg(const cbx_cbox2 *in)
+{
+    return cbx_is_inverted(CBX_C(0.0), in->h[0]) | cbx_is_inverted(CBX_C(0.0), in->h[1]);
+}
+
 /*@ requires \valid(out);
     assigns *out;
     ensures whole_plane(out);
