@@ -20,13 +20,13 @@ TIME = re.compile(r'\((\d+(?:\.\d+)?)(ms|s)\)')
 SMOKE = re.compile(r'^\[wp\] \[(\w+)\] Smoke-test (\S+)', re.M)
 JOBS = {
     'L64': 'binary64 lemmas', 'L32': 'binary32 lemmas',
-    'A64': 'binary64 kernels that need -wp-split',
-    'A32': 'binary32 kernels that need -wp-split',
-    'K64': 'binary64 primitives and the other kernels',
-    'K32': 'binary32 primitives and the other kernels',
-    'B64a': 'binary64 tight mode, classes, motion, batch',
-    'B64b': 'binary64 public functions and helpers',
-    'B32': 'binary32 public functions and helpers',
+    'A64': 'binary64 functions marked for -wp-split',
+    'A32': 'binary32 functions marked for -wp-split',
+    'K64': 'binary64 primitives and kernels (src/core, src/algo headers)',
+    'K32': 'binary32 primitives and kernels (src/core, src/algo headers)',
+    'B64a': 'binary64-only code (src/f64: tight mode, classes, motion)',
+    'B64b': 'binary64 algorithms (src/algo/*.c)',
+    'B32': 'binary32 algorithms (src/algo/*.c)',
     'S64': 'binary64 smoke tests', 'S32': 'binary32 smoke tests',
     'I64': 'binary64 interval matrices (proofs/imat.c)', 'SI64': 'binary64 interval-matrix smoke tests',
 }
