@@ -314,7 +314,8 @@ def coverage(raw, b):
             failures.append('coverage: test_%s at -O0 --coverage printed something else than at -O2' % run_name(i))
     r = sh(['gcovr', '--root', ROOT, '--object-directory', os.path.join(b, 'obj'),
             '--filter', os.path.join(ROOT, 'src') + '/', '--filter', os.path.join(ROOT, 'include') + '/',
-            '--json', os.path.join(raw, 'coverage.json'), os.path.join(b, 'obj')], check=True)
+            '--json', os.path.abspath(os.path.join(raw, 'coverage.json')), os.path.join(b, 'obj')],
+           cwd=b, check=True)  # gcov's files in the pack's own folder: two packs at once
     data = json.load(open(os.path.join(raw, 'coverage.json')))
     waivers = load_waivers()
     used = set()
