@@ -37,6 +37,7 @@ index.md, which `evidence.py --compare A B` leaves out.
 Usage: scripts/evidence.py [OUTDIR (build/evidence)]  |  scripts/evidence.py --compare DIR1 DIR2
 """
 import datetime
+import fcntl
 import glob
 import hashlib
 import json
@@ -312,10 +313,19 @@ def coverage(raw, b):
         same.append({'run': run_name(i), 'same_output_as_O2': ok})
         if not ok:
             failures.append('coverage: test_%s at -O0 --coverage printed something else than at -O2' % run_name(i))
-    r = sh(['gcovr', '--root', ROOT, '--object-directory', os.path.join(b, 'obj'),
-            '--filter', os.path.join(ROOT, 'src') + '/', '--filter', os.path.join(ROOT, 'include') + '/',
-            '--json', os.path.abspath(os.path.join(raw, 'coverage.json')), os.path.join(b, 'obj')],
-           cwd=b, check=True)  # gcov's files in the pack's own folder: two packs at once
+    # gcovr runs gcov in the checkout's root when the object folder does not
+    # resolve the sources' relative names, and gcov writes its .gcov files
+    # there: two packs made at once (make evidence-check) must take turns, or
+    # one reads the other's half-written files (the clean-clone run at
+    # f72a675 failed on it).  The lock is the build folder's, held by one
+    # gcovr at a time.
+    os.makedirs(os.path.join(ROOT, 'build'), exist_ok=True)
+    with open(os.path.join(ROOT, 'build', 'gcovr.lock'), 'w') as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        r = sh(['gcovr', '--root', ROOT, '--object-directory', os.path.join(b, 'obj'),
+                '--filter', os.path.join(ROOT, 'src') + '/', '--filter', os.path.join(ROOT, 'include') + '/',
+                '--json', os.path.abspath(os.path.join(raw, 'coverage.json')), os.path.join(b, 'obj')],
+               cwd=b, check=True)
     data = json.load(open(os.path.join(raw, 'coverage.json')))
     waivers = load_waivers()
     used = set()
