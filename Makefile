@@ -51,10 +51,10 @@ SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
-LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c \
-           src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c \
+LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c src/algo/cbx_project.c \
+           src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c src/f32/cbx_project_f.c \
            src/core/cbx_ieee.c src/f32/cbx_ieee_f.c
-HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h specs/cbx_plane.h
+HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_quot.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h specs/cbx_plane.h specs/cbx_proj_logic.h specs/cbx_proj.h
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
@@ -90,7 +90,7 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 	    -e 's#@VERSION@#$(VERSION)#' $< > $@
 
 # ---- tests ---------------------------------------------------------------
-TESTUTIL := tests/exact_util.c
+TESTUTIL := tests/exact_util.c tests/proj_oracle.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(PUBCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # The scene tool (issue 6): tools/certbox/, built with the library's flags.  An
@@ -146,7 +146,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project
 test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_badinput
 	./$(B)/test_special
@@ -164,6 +164,7 @@ test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
 	./$(B)/test_classes 200000 1
 	./$(B)/test_float 200000 1
 	./$(B)/test_plane 200000 1
+	./$(B)/test_project 20000 1
 	./$(B)/test_ieee
 	./$(B)/test_scene examples/*.scene
 	for f in examples/*.scene; do ./$(B)/certbox $$f > /dev/null || exit 1; done
@@ -187,6 +188,7 @@ test-san: $(TESTS:%=$(B)/san/test_%) $(B)/certbox
 	./$(B)/san/test_classes 50000 2
 	./$(B)/san/test_float 50000 2
 	./$(B)/san/test_plane 40000 2
+	./$(B)/san/test_project 4000 2
 	./$(B)/san/test_ieee
 	./$(B)/san/test_scene examples/*.scene
 	./$(B)/san/test_gltf $(GLTFDIR) tests/data/gltf $(B)/certbox
@@ -342,7 +344,8 @@ install-check: all check-deps-test
 # certbox.h and what it includes (both families' API, the precision tables,
 # and the ACSL logic that Frama-C users of the contracts need).
 PUBHDR := $(wildcard include/*.h) \
-          specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h specs/cbx_plane.h
+          specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h specs/cbx_plane.h \
+          specs/cbx_proj_logic.h specs/cbx_proj.h
 # The CMake package (cmake/*.cmake.in): its paths relative to its own place
 # (realpath -s: by name, not through this machine's symlinks), so that the
 # install can be staged or moved; absolute if they have no relative form.

@@ -254,6 +254,10 @@ typedef struct bench_ctx {
     cbx_box *sin, *qin, *qo;
     cbx_class *scls, *qcls;
     int cur;                  /* the class of the per-class kernels       */
+    /* projective: N camera maps (perspective times a rigid view) and
+     * boxes in front of each camera */
+    cbx_proj *pm;
+    cbx_box *pin;
 } bench_ctx;
 
 static double urand(xu_rng *r, double lo, double hi)
@@ -436,6 +440,9 @@ CBX_KERNEL(k_cbxc, cbx_cbox, cbx_transform_cbox(&b->a[i], &b->cin_cbx[i], &o[i])
 REF_KERNEL(k_arvoc, cbx_cbox, ref_arvo_cbox(&b->a[i], &b->cin_rn[i], &o[i]))
 CBX_KERNEL(k_sph, cbx_box, cbx_sphere_box(&b->a[i], &o[i]))
 CBX_KERNEL(k_sphbox, cbx_box, cbx_transform_box(&b->a[i], &unit_box, &o[i]))
+/* projective maps */
+REF_KERNEL(k_proj_ref, cbx_box, ref_proj8(&b->pm[i], &b->pin[i], &o[i]))
+CBX_KERNEL(k_proj, cbx_box, cbx_project_box(&b->pm[i], &b->pin[i], &o[i]))
 /* throughput */
 CBX_KERNEL(k_tp, cbx_box, cbx_transform_box(&b->ta[i], &b->tin[i], &o[i]))
 REF_KERNEL(k_tp_arvo1, cbx_box, ref_arvo_box(&b->ta[0], &b->tin[i], &o[i]))
@@ -1044,7 +1051,7 @@ typedef struct sizes {
 } sizes;
 
 /* the timing groups: a baseline and the rows timed against it */
-enum { G_BOX, G_ONE, G_F, G_F1, G_TC3, G_TB3, G_TC2, G_TB2, G_S, G_SC, G_CLS, NGRP = G_CLS + 5 };
+enum { G_BOX, G_ONE, G_F, G_F1, G_P, G_TC3, G_TB3, G_TC2, G_TB2, G_S, G_SC, G_CLS, NGRP = G_CLS + 5 };
 
 static const char *const cls_row_name[5] = {
     "scene, GENERAL instances: `cbx_transform_box_as`",
@@ -1122,6 +1129,11 @@ static void define_rows(bench_ctx *b, const sizes *z)
         w->proven = "n/a (exact)";
         w->pcode = 2;
     }
+
+    /* projective maps (a camera), against the 8 corners divided by w */
+    unsound(add_row(G_P, 1, "P-R", "projective: 8 corners divided by w, RN (pbrt, three.js)", k_proj_ref,
+                    n, P, 0, bsz, MK_NONE));
+    add_row(G_P, 0, "P", "projective: certbox `cbx_project_box`", k_proj, n, P, 0, bsz, MK_NONE);
 
     /* throughput, against memcpy of the same bytes */
     if (z->nb > 0) {
@@ -1501,6 +1513,48 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     }
     b->p0 = b->pa[0];
     b->p0f = b->paf[0];
+    /* projective: a perspective camera (field of view 30 to 120 degrees,
+     * near 2^-4 .. 1, far 2^8 .. 2^12 times near) times a rigid view; a box
+     * of size 2^-6 .. 2^2 in front of it (view depth 2 .. 2^10) */
+    b->pm = xmalloc(n * sizeof *b->pm);
+    b->pin = xmalloc(n * sizeof *b->pin);
+    rng.s = seed + 7;
+    for (k = 0; k < n; k++) {
+        double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
+        int i, j, l;
+        xu_rand_rotation(&rng, R);
+        for (i = 0; i < 3; i++) T[i] = urand(&rng, -10, 10);
+        f = 1.0 / tan(urand(&rng, 0.26, 1.05));
+        asp = urand(&rng, 1, 2);
+        nr = ldexp(1.0, xu_rng_int(&rng, -4, 0));
+        fr = nr * ldexp(1.0, xu_rng_int(&rng, 8, 12));
+        memset(pr, 0, sizeof pr);
+        pr[0][0] = f / asp; pr[1][1] = f;
+        pr[2][2] = (fr + nr) / (nr - fr); pr[2][3] = 2 * fr * nr / (nr - fr); pr[3][2] = -1;
+        memset(v, 0, sizeof v);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) v[i][j] = R[i][j];
+            v[i][3] = T[i];
+        }
+        v[3][3] = 1;
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++) {
+                double acc = 0;
+                for (l = 0; l < 4; l++) acc += pr[i][l] * v[l][j];
+                b->pm[k].m[i][j] = acc;
+            }
+        vc[2] = -ldexp(1.0, xu_rng_int(&rng, 1, 10));
+        vc[0] = urand(&rng, -0.5, 0.5) * vc[2];
+        vc[1] = urand(&rng, -0.5, 0.5) * vc[2];
+        h = ldexp(1.0, xu_rng_int(&rng, -6, 2)) * 0.5;
+        if (h > -vc[2] / 4) h = -vc[2] / 4;
+        for (i = 0; i < 3; i++) {
+            double c = 0;
+            for (j = 0; j < 3; j++) c += R[j][i] * (vc[j] - T[j]);
+            b->pin[k].lo[i] = c - h;
+            b->pin[k].hi[i] = c + h;
+        }
+    }
 }
 
 /* The throughput arrays: nb cases, and 2 nb binary32 boxes. */

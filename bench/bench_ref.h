@@ -60,6 +60,34 @@ static inline void ref_naive8(const cbx_affine *a, const cbx_box *in, cbx_box *o
     }
 }
 
+/* The box of a box under a 4x4 projective map as pbrt, three.js and
+ * Mitsuba compute it: the 8 corners, each row rounded to nearest, divided
+ * by w; no care for w <= 0 and no rounding direction (unsound). */
+static inline void ref_proj8(const cbx_proj *p, const cbx_box *in, cbx_box *out)
+{
+    double lo[3], hi[3];
+    int c, i;
+    for (i = 0; i < 3; i++) {
+        lo[i] = HUGE_VAL;
+        hi[i] = -HUGE_VAL;
+    }
+    for (c = 0; c < 8; c++) {
+        double x0 = (c & 1) ? in->hi[0] : in->lo[0];
+        double x1 = (c & 2) ? in->hi[1] : in->lo[1];
+        double x2 = (c & 4) ? in->hi[2] : in->lo[2];
+        double w = p->m[3][0] * x0 + p->m[3][1] * x1 + p->m[3][2] * x2 + p->m[3][3];
+        for (i = 0; i < 3; i++) {
+            double y = (p->m[i][0] * x0 + p->m[i][1] * x1 + p->m[i][2] * x2 + p->m[i][3]) / w;
+            lo[i] = ref_min(lo[i], y);
+            hi[i] = ref_max(hi[i], y);
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        out->lo[i] = lo[i];
+        out->hi[i] = hi[i];
+    }
+}
+
 static inline void ref_arvo_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
     double lo[3], hi[3];

@@ -369,6 +369,61 @@ static void show_float(xu_exact *x, int n, const sample *s0)
            cbx_ieee_check() == 0 ? "0 (this build computes as the proofs assume)" : "FAILED");
 }
 
+/* A box under a camera's projection (cbx_project_box), in NDC, with the
+ * round-to-nearest 8-corner divide beside it; the exact bounds in mpq. */
+static void show_project(int n)
+{
+    /* OpenGL's perspective: 90-degree field of view, near 0.1, far 100 */
+    cbx_proj p = {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, -100.1 / 99.9, -20.0 / 99.9}, {0, 0, -1, 0}}};
+    cbx_box in = {{-0.3, 0.2, -4.7}, {0.1, 0.6, -3.9}}, out, behind = {{-1, -1, -1}, {1, 1, 1}}, o2;
+    cbx_status st = cbx_project_box(&p, &in, &out), st2 = cbx_project_box(&p, &behind, &o2);
+    mpq_t X, W, r, lo, hi, t;
+    int i, c, j;
+    mpq_inits(X, W, r, lo, hi, t, NULL);
+    printf("[%d] a box under a camera's projection (90-degree field of view), in NDC:\n"
+           "  cbx_project_box: status %s\n", n, cbx_status_name(st));
+    for (i = 0; i < 3; i++) {
+        double nlo = HUGE_VAL, nhi = -HUGE_VAL;
+        for (c = 0; c < 8; c++) {
+            double v[3], x = 0, w = 0;
+            v[0] = (c & 1) ? in.hi[0] : in.lo[0];
+            v[1] = (c & 2) ? in.hi[1] : in.lo[1];
+            v[2] = (c & 4) ? in.hi[2] : in.lo[2];
+            mpq_set_d(X, p.m[i][3]);
+            mpq_set_d(W, p.m[3][3]);
+            for (j = 0; j < 3; j++) {
+                mpq_set_d(t, p.m[i][j]);
+                mpq_set_d(r, v[j]);
+                mpq_mul(t, t, r);
+                mpq_add(X, X, t);
+                mpq_set_d(t, p.m[3][j]);
+                mpq_mul(t, t, r);
+                mpq_add(W, W, t);
+                x += p.m[i][j] * v[j];
+                w += p.m[3][j] * v[j];
+            }
+            x += p.m[i][3];
+            w += p.m[3][3];
+            mpq_div(r, X, W);
+            if (c == 0 || mpq_cmp(r, lo) < 0) mpq_set(lo, r);
+            if (c == 0 || mpq_cmp(r, hi) > 0) mpq_set(hi, r);
+            if (x / w < nlo) nlo = x / w;
+            if (x / w > nhi) nhi = x / w;
+        }
+        mpq_set_d(t, out.lo[i]);
+        mpq_set_d(r, out.hi[i]);
+        printf("  ndc%d in [%22.17g, %22.17g]  contains the exact hull: %s\n", i, out.lo[i], out.hi[i],
+               mpq_cmp(t, lo) <= 0 && mpq_cmp(r, hi) >= 0 ? "yes" : "NO");
+        mpq_set_d(t, nlo);
+        mpq_set_d(r, nhi);
+        printf("       8 corners / w, RN: [%22.17g, %22.17g]  contains it: %s\n", nlo, nhi,
+               mpq_cmp(t, lo) <= 0 && mpq_cmp(r, hi) >= 0 ? "yes" : "no (rounded inward)");
+    }
+    printf("  the cube [-1, 1]^3 around the camera: status %s, out = the whole space: %s\n\n",
+           cbx_status_name(st2), o2.lo[0] == -HUGE_VAL && o2.hi[0] == HUGE_VAL ? "yes" : "no");
+    mpq_clears(X, W, r, lo, hi, t, NULL);
+}
+
 int main(void)
 {
     sample s[N_SAMPLES];
@@ -385,6 +440,7 @@ int main(void)
     show_sphere(&x, N_SAMPLES + 1);
     show_cbox(&x, N_SAMPLES + 2, &s[0]);
     show_float(&x, N_SAMPLES + 3, &s[0]);
+    show_project(N_SAMPLES + 4);
     xu_clear(&x);
     return 0;
 }

@@ -401,3 +401,67 @@ cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out);
 */
 cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
                              const cbx_fp rot[3][3], cbx_box *out);
+
+/* ---- projective maps (a camera's projection) ----------------------------
+ * cbx_project_box: the box of {(X_0/W, X_1/W, X_2/W)} over every real point
+ * of the box *in, where X_i = m[i][0] x + m[i][1] y + m[i][2] z + m[i][3]
+ * and W is row 3 (NDC or screen space).  Computed at the 8 corners (the
+ * image is in their hull where W > 0) with the proven interval kernel and
+ * outward-rounded quotients.  Proven (specs/cbx_proj.h: paxis): with
+ * CBX_OK, W > 0 at every real point of the box and lo_i <= X_i/W <= hi_i
+ * there, every end finite, and each end tight at some corner:
+ * |X - end W| <= 24 u (S_X + |end| S_W) + 2^-1064 (1 + |end| + S_W)
+ * (S the row's exact magnitude |m0 x| + |m1 y| + |m2 z| + |t| there;
+ * binary32: 2^-139).
+ *   NaN anywhere in *p or *in       -> CBX_EINVAL, *out the whole space
+ *   an axis of *in with no point    -> CBX_EMPTY,  *out empty (lo +inf, hi -inf)
+ *   W not above its rounding at some corner (the box touches or crosses
+ *   the camera plane W = 0, or lies behind it)
+ *                                   -> CBX_EBEHIND, *out the whole space
+ *   an entry, a box end or a quotient outside the range (linear entries
+ *   and box ends above 2^509 in magnitude, translations above 2^1018,
+ *   |X| above about 2^999 W; binary32 2^61, 2^122, 2^119)
+ *                                   -> CBX_ERANGE, *out the whole space
+ * CBX_OK whenever every input is in that range and every quotient is
+ * (proj_ok: a box clear of the camera plane, every corner's W above the
+ * rounding of its enclosure); CBX_ERANGE for inputs in the range only
+ * with W > 0 at every corner (a box touching or behind the camera plane
+ * gets CBX_EBEHIND).  out may be in itself; otherwise *out may
+ * not overlap *p or *in. */
+/*@ requires valid: \valid_read(p) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, p) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes proj_nan(p) || box_nan(in);
+      ensures \result == CBX_EINVAL;
+      ensures whole_space(out);
+    behavior empty_input:
+      assumes !proj_nan(p) && !box_nan(in) && is_empty(in);
+      ensures \result == CBX_EMPTY;
+      ensures empty_out(out);
+    behavior box_input:
+      assumes !proj_nan(p) && !box_nan(in) && !is_empty(in);
+      ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
+      ensures whole: \result != CBX_OK ==> whole_space(out);
+      ensures axis0: \result == CBX_OK ==> paxis(out->lo[0], out->hi[0],
+        \at(p->m[0][0], Pre), \at(p->m[0][1], Pre), \at(p->m[0][2], Pre), \at(p->m[0][3], Pre),
+        \at(p->m[3][0], Pre), \at(p->m[3][1], Pre), \at(p->m[3][2], Pre), \at(p->m[3][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis1: \result == CBX_OK ==> paxis(out->lo[1], out->hi[1],
+        \at(p->m[1][0], Pre), \at(p->m[1][1], Pre), \at(p->m[1][2], Pre), \at(p->m[1][3], Pre),
+        \at(p->m[3][0], Pre), \at(p->m[3][1], Pre), \at(p->m[3][2], Pre), \at(p->m[3][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures axis2: \result == CBX_OK ==> paxis(out->lo[2], out->hi[2],
+        \at(p->m[2][0], Pre), \at(p->m[2][1], Pre), \at(p->m[2][2], Pre), \at(p->m[2][3], Pre),
+        \at(p->m[3][0], Pre), \at(p->m[3][1], Pre), \at(p->m[3][2], Pre), \at(p->m[3][3], Pre),
+        \at(in->lo[0], Pre), \at(in->hi[0], Pre), \at(in->lo[1], Pre), \at(in->hi[1], Pre),
+        \at(in->lo[2], Pre), \at(in->hi[2], Pre));
+      ensures behind: \result == CBX_EBEHIND ==> \at(proj_fast(p) && box_fast(in) && !proj_clear(p, in), Pre);
+      ensures range: \result == CBX_ERANGE ==> \at(!(proj_fast(p) && box_fast(in)) || proj_front(p, in), Pre);
+      ensures ok: \at(proj_ok(p, in), Pre) ==> \result == CBX_OK;
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_box(const cbx_proj *p, const cbx_box *in, cbx_box *out);

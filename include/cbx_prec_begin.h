@@ -73,6 +73,9 @@
 #define CBX_SA    0x1p-532    /* ball_radius's absolute tightness term */
 #define CBX_EB    0x1p254     /* |rot_ij|, |radii_j| of an ellipsoid   */
 #define CBX_EP    0x1p508     /* |rot_ij radii_j|                      */
+/* projective bounds: a quotient a / b is formed when RN(|a| QS) <= b */
+#define CBX_QS    0x1p-1000   /* then |a| <= QR b                      */
+#define CBX_QR    0x1p1002
 /* The magnitude classes of the domain: |m| <= bm and |c| <= bc with
  * bm bc = 2^1018 (tag, bm, bc); HEAD is tried first. */
 #define CBX_CLASS_HEAD(X) X(509, 0x1p509, 0x1p509)
@@ -137,6 +140,8 @@
 #define CBX_SA    0x1p-70
 #define CBX_EB    0x1p30
 #define CBX_EP    0x1p60
+#define CBX_QS    0x1p-120
+#define CBX_QR    0x1p122
 /* magnitude classes: bm bc = 2^122 */
 #define CBX_CLASS_HEAD(X) X(f61, 0x1p61, 0x1p61)
 #define CBX_CLASS_TAIL(X) \
@@ -174,8 +179,11 @@
 #define cbx_transform_box2 cbx_transform_box2f
 #define cbx_disk_box2 cbx_disk_box2f
 #define cbx_ellipse_box2 cbx_ellipse_box2f
+#define cbx_proj cbx_projf
+#define cbx_project_box cbx_project_boxf
 #define cbx_pinf cbx_pinf_f
 #define cbx_ninf cbx_ninf_f
 #define cbx_sqrt_rn cbx_sqrt_rn_f
+#define cbx_div_rn cbx_div_rn_f
 #include "cbx_names_f.h"
 #endif

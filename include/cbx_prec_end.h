@@ -27,9 +27,12 @@
 #undef cbx_transform_box2
 #undef cbx_disk_box2
 #undef cbx_ellipse_box2
+#undef cbx_proj
+#undef cbx_project_box
 #undef cbx_pinf
 #undef cbx_ninf
 #undef cbx_sqrt_rn
+#undef cbx_div_rn
 #define CBX_NAMES_UNDEF
 #include "cbx_names_f.h"
 #undef CBX_NAMES_UNDEF
@@ -79,6 +82,8 @@
 #undef CBX_SA
 #undef CBX_EB
 #undef CBX_EP
+#undef CBX_QS
+#undef CBX_QR
 #undef CBX_CLASS_HEAD
 #undef CBX_CLASS_TAIL
 #undef CBX_INST

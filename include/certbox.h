@@ -71,6 +71,12 @@ typedef struct cbx_affine2f { float m[2][3]; } cbx_affine2f;
 typedef struct cbx_box2f { float lo[2], hi[2]; } cbx_box2f;
 typedef struct cbx_cbox2f { float c[2], h[2]; } cbx_cbox2f;
 
+/* A projective map of space (both formats): X_i = m[i][0]*x_0 + m[i][1]*x_1
+ * + m[i][2]*x_2 + m[i][3] for i = 0..3, the point (X_0/X_3, X_1/X_3,
+ * X_2/X_3); a 4x4 matrix, row-major, acting on column vectors (x, 1). */
+typedef struct cbx_proj { double m[4][4]; } cbx_proj;
+typedef struct cbx_projf { float m[4][4]; } cbx_projf;
+
 /* An interval matrix (binary64): the set of affine maps whose entry (i, j)
  * lies in [lo[i][j], hi[i][j]], the translation in column 3; what a chain
  * of rounded transforms or a rotation built from a quaternion is known to
@@ -91,8 +97,10 @@ typedef enum cbx_status {
     CBX_OK = 0,      /* result proven to contain the exact image           */
     CBX_EMPTY = 1,   /* input box empty (lo > hi on some axis): out empty  */
     CBX_EINVAL = -1, /* NaN in the input: out is the whole space           */
-    CBX_ERANGE = -2  /* input outside the proven domain on some axis: those
+    CBX_ERANGE = -2, /* input outside the proven domain on some axis: those
                         axes are [-inf, +inf], the others are proven       */
+    CBX_EBEHIND = -3 /* projective map: part of the box on or behind the
+                        camera plane (w <= 0): out is the whole space      */
 } cbx_status;
 
 /* Transform classes (cbx_classify).  Each class is contained in the next:
@@ -118,6 +126,7 @@ typedef enum cbx_class {
 #endif
 #include "cbx_logic.h"
 #include "cbx_ball.h"
+#include "cbx_proj_logic.h"
 #endif
 #if !defined(__FRAMAC__) || !defined(CBX_FRAMAC_ONLY_32)
 #define CBX_INST 64
@@ -125,6 +134,7 @@ typedef enum cbx_class {
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
 #include "cbx_plane.h"
+#include "cbx_proj.h"
 #include "cbx_imat.h"
 #endif
 #include "cbx_api.h"
@@ -136,6 +146,7 @@ typedef enum cbx_class {
 #ifdef __FRAMAC__
 #include "cbx_spec.h"
 #include "cbx_plane.h"
+#include "cbx_proj.h"
 #endif
 #include "cbx_api.h"
 #include "cbx_prec_end.h"
@@ -331,7 +342,7 @@ cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out)
  * cases through the library's own rounding primitives, compiled with the
  * library's flags, and returns 0 when all hold, else the CBX_IEEE_* bits of
  * the failed checks.  It also checks what the proofs trust: sqrt and sqrtf
- * correctly rounded, the error-free transformations of the tight mode exact
+ * correctly rounded, division correctly rounded (the projective bounds), the error-free transformations of the tight mode exact
  * (cbx_two_sum, cbx_two_prod in the form this build selected: fma or
  * Dekker, src/core/cbx_eft.h) and, where two_prod calls it, fma correctly
  * rounded: all on hard cases (src/core/cbx_ieee_cases.h).  Call it once at
@@ -346,6 +357,7 @@ cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out)
 #define CBX_IEEE_FMA      0x40u /* fma not correctly rounded (builds whose two_prod calls fma) */
 #define CBX_IEEE_SQRT     0x80u /* sqrt or sqrtf not correctly rounded on hard cases */
 #define CBX_IEEE_EFT      0x100u /* two_sum or two_prod (fma or Dekker form) not exact */
+#define CBX_IEEE_DIV      0x200u /* division not correctly rounded on hard cases */
 unsigned cbx_ieee_check(void);
 
 /* Human-readable name of a status ("CBX_OK", ...). */

@@ -3,7 +3,8 @@
 
     python3 proofs/fcts.py TU GROUP     a comma list of function names
 
-TU is a proof translation unit (proofs/all.c, all_f.c, imat.c).  It is
+TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
+proj_f.c).  It is
 preprocessed as Frama-C preprocesses it (gcc -E -C -D__FRAMAC__, the
 library's include folders of scripts/incs.sh and specs/); each function
 definition is then attributed to the file the line markers name, under the
@@ -18,6 +19,9 @@ follow the layers of src/:
     f64      binary64-only code: functions of src/f64/*.c, minus split and
              minus the interval-matrix unit's (group imat)
     imat     the interval-matrix unit: src/f64/cbx_imat.c, src/f64/cbx_ikernel.h
+    proj     the projective unit (proofs/proj.c, proj_f.c): functions of
+             src/algo/cbx_project.c and src/core/cbx_quot.h, minus split
+    projsplit  the same unit's functions marked for -wp-split
 
 The rest of a unit (the algorithms of src/algo/*.c) is what a job's
 -wp-skip-fct of these groups leaves.
@@ -67,6 +71,7 @@ def group(defs, g):
     def under(f, folder, ext):
         return f.startswith(folder) and f.endswith(ext)
     imat = ('src/f64/cbx_imat.c', 'src/f64/cbx_ikernel.h')
+    proj = ('src/algo/cbx_project.c', 'src/core/cbx_quot.h')
     if g == 'split':
         return [n for f, n, s in defs if s]
     if g == 'kernels':
@@ -75,6 +80,10 @@ def group(defs, g):
         return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat]
     if g == 'imat':
         return [n for f, n, s in defs if f in imat]
+    if g == 'proj':
+        return [n for f, n, s in defs if not s and f in proj]
+    if g == 'projsplit':
+        return [n for f, n, s in defs if s and f in proj]
     sys.exit('fcts.py: unknown group %s' % g)
 
 

@@ -15,6 +15,10 @@
 #             postconditions multiplies goals)
 #   I64, SI64 the interval-matrix functions (proofs/imat.c, with the
 #             lemmas of specs/cbx_imat_logic.h) and their smoke tests
+#   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
+#             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
+#             -wp-split; PA64, PA32 its functions marked for -wp-split;
+#             SP64, SP32 its smoke tests
 #   S64, S32  the smoke tests alone (-wp-smoke-tests, every regular goal
 #             deselected): a smoke goal "passes" when CVC4 can NOT derive
 #             false from its context within CBX_SMOKE_STEPS resource units
@@ -57,6 +61,9 @@ fcts() { python3 proofs/fcts.py "$@"; }
 case $name in
   I64) TU=proofs/imat.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU imat)" ;;
   SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SEL="-wp-fct $(fcts $TU imat)" ;;
+  P64|P32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS=$WP; SEL="-wp-fct $(fcts $TU proj)" ;;
+  PA64|PA32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU projsplit)" ;;
+  SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SEL="-wp-fct $(fcts $TU proj),$(fcts $TU projsplit)" ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
   A64) TU=proofs/all.c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU split)" ;;
@@ -76,11 +83,13 @@ case $name in
     # shellcheck disable=SC2086
     $FC $TU $OPTS $SEL > $out/wp-$name.log 2>&1 || true ;;
   *)
-    # Two passes.  1: CVC4 alone, CBX_WP_TIMEOUT1 (20 s): it proves most
+    # Two passes.  1: CVC4 alone, CBX_WP_TIMEOUT1 (40 s): it proves most
     # goals in well under a second and nearly all the rest within 10 s (the
     # big behaviors' postconditions take 2-9 s; at 2 s they all fell to pass
-    # 2, which regenerated every goal of their functions; at 10 s a few
-    # goals of cbx_sphere_box fell to pass 2 on a loaded machine).  2: both provers
+    # 2, which regenerated every goal of their functions; at 10 s, and on
+    # 2026-11-27 at 20 s, a few goals of cbx_sphere_box and
+    # cbx_ellipsoid_box (6-8 s alone) fell to pass 2 with four provers on
+    # two cores, and each such job ran 3 minutes longer).  2: both provers
     # raced with the full timeout, on
     # the functions where pass 1 left a goal unproved (every goal of those
     # functions is regenerated; the ones pass 1 proved are read back from
@@ -104,7 +113,7 @@ case $name in
     P1=cvc4r$fam
     case $name in L*) P1=cvc4r$fam,z3r$fam ;; esac
     # shellcheck disable=SC2086
-    $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-20} -wp-cache update \
+    $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-40} -wp-cache update \
       -wp-cache-dir "$cache" > $out/wp-$name.log 2>&1 || true
     again=$(python3 proofs/report.py --unproved-functions $out/wp-$name.log)
     if [ -n "$again" ]; then

@@ -29,6 +29,9 @@ JOBS = {
     'B32': 'binary32 algorithms (src/algo/*.c)',
     'S64': 'binary64 smoke tests', 'S32': 'binary32 smoke tests',
     'I64': 'binary64 interval matrices (proofs/imat.c)', 'SI64': 'binary64 interval-matrix smoke tests',
+    'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
+    'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',
+    'SP64': 'binary64 projective-bound smoke tests', 'SP32': 'binary32 projective-bound smoke tests',
 }
 FAMILY = {'64': 'binary64 (double): `cbx_transform_box`, ...',
           '32': 'binary32 (float): `cbx_transform_boxf`, ... (same sources)'}

@@ -57,6 +57,7 @@ variant "built with -fno-signed-zeros" 0x10 -fno-signed-zeros
 # iteration); the fma-free build (Dekker's product) must pass
 variant "fma replaced by x*y+z (CBX_TEST_NAIVE_FMA)" 0x140 -DCBX_TEST_NAIVE_FMA
 variant "sqrt and sqrtf not correctly rounded (CBX_TEST_NAIVE_SQRT)" 0x80 -DCBX_TEST_NAIVE_SQRT
+variant "division through the reciprocal (CBX_TEST_NAIVE_DIV)" 0x200 -DCBX_TEST_NAIVE_DIV
 variant "fma-free build (CBX_NO_FMA: Dekker's product) passes" 0 -DCBX_NO_FMA
 # 3. refused at compile time, by every library source
 refused() { # name flags...

@@ -890,6 +890,7 @@ int xu_status_index(cbx_status s)
     case CBX_EMPTY: return 1;
     case CBX_EINVAL: return 2;
     case CBX_ERANGE: return 3;
+    case CBX_EBEHIND: return -1; /* cbx_project_box only: not a status of the affine forms */
     }
     return -1;
 }

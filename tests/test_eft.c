@@ -237,9 +237,27 @@ static long tables(ctx *k, long *checked)
         if (mpfr_get_d(w, MPFR_RNDN) != cbx_sqrt_cases[i][1]) { bad++; printf("  FAIL sqrt row %u\n", i); }
         (*checked)++;
     }
+    for (i = 0; i < sizeof cbx_div_cases / sizeof cbx_div_cases[0]; i++) {
+        int t;
+        mpfr_set_d(x, cbx_div_cases[i][0], MPFR_RNDN);
+        mpfr_set_d(y, cbx_div_cases[i][1], MPFR_RNDN);
+        t = mpfr_div(w, x, y, MPFR_RNDN);
+        mpfr_subnormalize(w, t, MPFR_RNDN);
+        if (mpfr_get_d(w, MPFR_RNDN) != cbx_div_cases[i][2]) { bad++; printf("  FAIL div row %u\n", i); }
+        (*checked)++;
+    }
     mpfr_set_emin(-148);
     mpfr_set_emax(128);
     mpfr_set_prec(w, 24);
+    for (i = 0; i < sizeof cbx_divf_cases / sizeof cbx_divf_cases[0]; i++) {
+        int t;
+        mpfr_set_d(x, cbx_divf_cases[i][0], MPFR_RNDN);
+        mpfr_set_d(y, cbx_divf_cases[i][1], MPFR_RNDN);
+        t = mpfr_div(w, x, y, MPFR_RNDN);
+        mpfr_subnormalize(w, t, MPFR_RNDN);
+        if (mpfr_get_flt(w, MPFR_RNDN) != cbx_divf_cases[i][2]) { bad++; printf("  FAIL divf row %u\n", i); }
+        (*checked)++;
+    }
     for (i = 0; i < sizeof cbx_sqrtf_cases / sizeof cbx_sqrtf_cases[0]; i++) {
         int t;
         mpfr_set_d(x, cbx_sqrtf_cases[i][0], MPFR_RNDN);

@@ -29,7 +29,7 @@
 
 /* the CBX_IEEE_* bits of certbox.h, in order */
 static const char *const bit_name[] = { "contract", "excess", "ftz", "rounding", "special", "assoc",
-                                        "fma", "sqrt", "eft" };
+                                        "fma", "sqrt", "eft", "div" };
 #define NBITS (int)(sizeof bit_name / sizeof bit_name[0])
 
 static void print_bits(unsigned b)

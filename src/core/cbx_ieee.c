@@ -22,6 +22,7 @@
 #include "certbox.h"
 #include "cbx_prec.h"
 #include "cbx_round.h"
+#include "cbx_quot.h"
 #include "cbx_ieee_cases.h"
 #if CBX_INST == 64
 #include "cbx_eft.h"
@@ -77,6 +78,33 @@ static unsigned check_sqrt_cases(void)
     for (i = 0; i < sizeof SQ / sizeof SQ[0]; i++)
         if (!same(check_sqrt(opaque(SQ[i][0])), SQ[i][1]))
             bad |= CBX_IEEE_SQRT;
+    return bad;
+}
+
+#if defined(CBX_TEST_NAIVE_DIV)
+/* Test hook only (scripts/ieee.sh): a division rounded twice, through the
+ * reciprocal (what -freciprocal-math builds). */
+static cbx_fp check_div(cbx_fp a, cbx_fp b)
+{
+    return a * (CBX_C(1.0) / b);
+}
+#else
+#define check_div cbx_div_rn /* the library's own division */
+#endif
+
+/* division correctly rounded on the hard cases (cbx_ieee_cases.h), through
+ * the library's own cbx_div_rn (the projective bounds) */
+static unsigned check_div_cases(void)
+{
+    unsigned bad = 0, i;
+#if CBX_INST == 64
+#define DV cbx_div_cases
+#else
+#define DV cbx_divf_cases
+#endif
+    for (i = 0; i < sizeof DV / sizeof DV[0]; i++)
+        if (!same(check_div(opaque(DV[i][0]), opaque(DV[i][1])), DV[i][2]))
+            bad |= CBX_IEEE_DIV;
     return bad;
 }
 
@@ -184,6 +212,7 @@ unsigned cbx_ieee_fmt(void)
     /* what the proofs trust: sqrt correctly rounded; the EFTs exact and
      * fma correctly rounded (binary64: the tight mode is binary64 only) */
     bad |= check_sqrt_cases();
+    bad |= check_div_cases();
 #if CBX_INST == 64
     bad |= check_eft();
 #endif

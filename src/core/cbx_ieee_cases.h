@@ -93,4 +93,27 @@ static const float cbx_sqrtf_cases[][2] = {
 };
 #endif
 
+
+/* Division, correctly rounded (C99 Annex F): a, b, RN(a / b).  Thirds and
+ * tenths (halfway tails), quotients next to 1, a subnormal quotient, one
+ * near the top of the range that cbx_quot_ok admits; recomputed with MPFR
+ * by tests/test_eft. */
+static const double cbx_div_cases[][3] = {
+    { 0x1p+0, 0x1.8p+1, 0x1.5555555555555p-2 },
+    { 0x1p+1, 0x1.8p+1, 0x1.5555555555555p-1 },
+    { 0x1p+0, 0x1.4p+3, 0x1.999999999999ap-4 },
+    { 0x1.fffffffffffffp+0, 0x1.ffffffffffffep+0, 0x1.0000000000001p+0 },
+    { 0x1.23456789abcdep-1000, 0x1.5p+60, 0x0.000000000377bp-1022 },
+    { -0x1.8p+900, 0x1.0000000000001p-100, -0x1.7ffffffffffffp+1000 },
+    { 0x1.5555555555555p+0, 0x1.aaaaaaaaaaaabp-1, 0x1.9999999999999p+0 },
+};
+static const float cbx_divf_cases[][3] = {
+    { 0x1p+0f, 0x1.8p+1f, 0x1.555556p-2f },
+    { 0x1p+1f, 0x1.8p+1f, 0x1.555556p-1f },
+    { 0x1p+0f, 0x1.4p+3f, 0x1.99999ap-4f },
+    { 0x1.fffffep+0f, 0x1.fffffcp+0f, 0x1.000002p+0f },
+    { 0x1.234568p-100f, 0x1.5p+40f, 0x1.bcp-141f },
+    { -0x1.8p+100f, 0x1.000002p-20f, -0x1.7ffffep+120f },
+};
+
 #endif /* CBX_IEEE_CASES_H */

@@ -11,6 +11,7 @@ const char *cbx_status_name(cbx_status s)
     case CBX_EMPTY: return "CBX_EMPTY";
     case CBX_EINVAL: return "CBX_EINVAL";
     case CBX_ERANGE: return "CBX_ERANGE";
+    case CBX_EBEHIND: return "CBX_EBEHIND";
     default: return "CBX_UNKNOWN";
     }
 }

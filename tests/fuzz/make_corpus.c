@@ -368,6 +368,33 @@ static void plane(void)
     seed(H, "ellipse-nan", 0x03, 10, 0, 0, 1, 1, NaN, 0, 0, 1, 0, 0);
 }
 
+/* fuzz_project: control bit 0 the format, 1 sort the box, 2 W clear; then
+ * the 16 map entries and lo0, hi0, lo1, hi1, lo2, hi2
+ * (tests/fuzz/fuzz_project.c). */
+#define CAM90 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -1.002, -0.2002, 0, 0, -1, 0
+static void project(void)
+{
+    const char *H = "project";
+    seed(H, "camera-cube-front", 0x00, 22, CAM90, -0.5, 0.5, -0.5, 0.5, -5.5, -4.5);
+    seed(H, "camera-cube-front-f32", 0x01, 22, CAM90, -0.5, 0.5, -0.5, 0.5, -5.5, -4.5);
+    seed(H, "camera-crossing", 0x00, 22, CAM90, -0.5, 0.5, -0.5, 0.5, -1, 1);
+    seed(H, "camera-touching", 0x00, 22, CAM90, -0.5, 0.5, -0.5, 0.5, -1, 0);
+    seed(H, "camera-behind", 0x00, 22, CAM90, -0.5, 0.5, -0.5, 0.5, 1, 2);
+    seed(H, "camera-w-tiny", 0x00, 22, CAM90, -0.5, 0.5, -0.5, 0.5, -1, -0x1p-1000);
+    seed(H, "camera-far-tiny", 0x00, 22, 1e6, 0, 0, 0, 0, 1e6, 0, 0, 0, 0, -1, -0.2, 0, 0, -1, 0,
+         -1e-3, 1e-3, -1e-3, 1e-3, -1e5, -99999.999);
+    seed(H, "affine-w-const", 0x04, 22, 0.6, -0.8, 0, 5, 0.8, 0.6, 0, -5, 0, 0, 1, 0, 0, 0, 0, 3,
+         -1, 1, -2, 2, -3, 3);
+    seed(H, "edges", 0x02, 22, 0x1p509, -0x1p509, 0x1p509, 0x1p1018, 1, 1, 1, -0x1p1018, 0, 0, 1, 0,
+         0, 0, 0, 0x1p1018, -0x1p509, 0x1p509, -1, 1, 0, 0);
+    seed(H, "empty", 0x00, 22, CAM90, 1, -1, -0.5, 0.5, -5.5, -4.5);
+    seed(H, "nan-map", 0x00, 22, 1, NaN, 0, 0, 0, 1, 0, 0, 0, 0, -1, 0, 0, 0, -1, 0,
+         -0.5, 0.5, -0.5, 0.5, -5.5, -4.5);
+    seed(H, "inf-box", 0x00, 22, CAM90, -INF, 0.5, -0.5, 0.5, -5.5, -4.5);
+    seed(H, "zero-w", 0x00, 22, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0,
+         -1, 1, -1, 1, -1, 1);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -383,6 +410,7 @@ int main(int argc, char **argv)
     sphere_box();
     ellipsoid_box();
     plane();
+    project();
     printf("make_corpus: %d seeds written under %s\n", nwritten, outdir);
     return 0;
 }
