@@ -152,7 +152,61 @@ static int eft_ok(double m, double v)
     return cbx_abs(p) >= 0x1p-968;
 }
 
-/* The largest certified double <= vsum(y), or r when none beats r. */
+/* A candidate and whether it is certified. */
+typedef struct cand { double c; int ok; } cand;
+
+/* The fast certificate: two distillation passes and one sign decision on
+ * the residual.  The first pass leaves the rounded sum s in v7; s moves
+ * out (vsum(z) = E - s) and a second pass brings the residual's rounded
+ * sum rho to v7.  c = RN(s + rho) with its error e (two_sum: c + e =
+ * s + rho exactly) in v7 leaves vsum(w) = E - c, which decide settles
+ * when e dominates the second-order terms: E >= c (then c = RD(E), as e
+ * is at most half the gap above c), or E < c, and then pred(c) (Rump et
+ * al.'s neighbour) is certified the same way, from vsum(w) + (c - pred(c))
+ * when that sum is exact in v7.  ok == 0 (E within the second-order
+ * terms of c, or a sum not exact): the full search decides. */
+/*@ requires fin: vfin(y);
+    assigns \nothing;
+    ensures fin: \result.ok != 0 ==> \is_finite(\result.c);
+    ensures ok: \result.ok != 0 ==> \result.c <= vsum(y);
+*/
+static cand tighten_fast(cbx_vec8 y)
+{
+    cand res;
+    cbx_vec8 z = pass8(y);
+    double s = z.v7;
+    res.c = 0.0;
+    res.ok = 0;
+    z.v7 = 0.0;
+    /*@ assert z1: vsum(z) == vsum(y) - s; */
+    cbx_vec8 w = pass8(z);
+    cbx_dd ce = eft_sum(s, w.v7);
+    double c = ce.hi;
+    w.v7 = ce.lo;
+    /*@ assert w1: vsum(w) == vsum(y) - c; */
+    int d = decide(w);
+    if (d > 0) {
+        res.c = c;
+        res.ok = 1;
+    } else if (d < 0 && c >= -0x1p1017 && c <= 0x1p1017) {
+        double p = neighbour(c, 1);
+        cbx_dd h = eft_sum(c, -p);
+        cbx_dd g = eft_sum(w.v7, h.hi);
+        if (h.lo == 0.0 && g.lo == 0.0) {
+            w.v7 = g.hi;
+            /*@ assert w2: vsum(w) == vsum(y) - p; */
+            if (decide(w) > 0) {
+                res.c = p;
+                res.ok = 1;
+            }
+        }
+    }
+    return res;
+}
+
+/* The largest certified double <= vsum(y), or r when none beats r: the
+ * fast certificate, else the full search (three passes for the candidate,
+ * each candidate certified from the start). */
 /*@ requires fin: vfin(y) && \is_finite(r);
     requires free: y.v7 == 0;
     assigns \nothing;
@@ -162,6 +216,9 @@ static int eft_ok(double m, double v)
 static double tighten_core(double r, cbx_vec8 y)
 {
     double best = r;
+    cand f = tighten_fast(y);
+    if (f.ok != 0)
+        return f.c > r ? f.c : r;
     double c = approx(y);
     if (!(c >= -0x1p1017 && c <= 0x1p1017))
         return r;
