@@ -81,6 +81,12 @@ case_ sphere-radius-doubled src/algo/cbx_sphere.c ball_axis_bounds proofs/all.c 
 case_ plane-status-ok src/algo/cbx_interval.c cbx_transform_box2 proofs/all.c same_in,same_out,ok_iff ok_iff \
   "    return (r0.ok && r1.ok) ? CBX_OK : CBX_ERANGE;" \
   "    return CBX_OK;" - &
+# 10. the projective bound: one corner's lower quotient rounded to nearest,
+#    not down (it can exceed X / W: corner_lo's precondition r wh <= a,
+#    which carries soundness, must fail)
+case_ project-lo-rounded-to-nearest src/algo/cbx_project.c proj_corner proofs/proj.c pos call_corner_lo_requires_pos \
+  "            cbx_fp lo = cbx_div_dn(xe.lo, bl);" \
+  "            cbx_fp lo = cbx_div_rn(xe.lo, bl);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"
