@@ -136,12 +136,12 @@
 #define ptlw ptlw_f
 #define pthw pthw_f
 #define ptl_pos_h ptl_pos_h_f
-#define ptl_pos ptl_pos_f
 #define ptl_neg_h ptl_neg_h_f
-#define ptl_neg ptl_neg_f
 #define pth_pos_h pth_pos_h_f
-#define pth_pos pth_pos_f
 #define pth_neg_h pth_neg_h_f
+#define ptl_pos ptl_pos_f
+#define ptl_neg ptl_neg_f
+#define pth_pos pth_pos_f
 #define pth_neg pth_neg_f
 #else
 #undef in_dom
@@ -273,11 +273,11 @@
 #undef ptlw
 #undef pthw
 #undef ptl_pos_h
-#undef ptl_pos
 #undef ptl_neg_h
-#undef ptl_neg
 #undef pth_pos_h
-#undef pth_pos
 #undef pth_neg_h
+#undef ptl_pos
+#undef ptl_neg
+#undef pth_pos
 #undef pth_neg
 #endif
