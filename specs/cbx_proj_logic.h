@@ -71,9 +71,9 @@
 /* The lemmas, only in the translation units that prove or use them
  * (proofs/lemmas.c, lemmas_f.c, proj.c, proj_f.c: CBX_PROJ_LEMMAS).  A
  * global lemma is a hypothesis of every goal of its unit: with these in
- * proofs/all.c and all_f.c, every job's goals took two to three times as
- * long (2026-11-27: K64 428 s against 155 s, B64b 978 s with the sphere's
- * goals pushed to pass 2). */
+ * proofs/all.c and all_f.c, the same machine took 428 s for job K64
+ * against 367 s, and 978 s for B64b against 679 s (the sphere's slowest
+ * goals were pushed to pass 2), 2026-11-27. */
 #ifdef CBX_PROJ_LEMMAS
 /*@ // The corner argument, one axis at a time: at least v at both ends of
     // a segment, at least v on it; at the 4 corners of a face, on the face;
