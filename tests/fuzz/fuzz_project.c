@@ -39,59 +39,43 @@ static void on_fail(const char *what)
     fz_fail("%s", what);
 }
 
+/* One call in one format (FP, PROJ, BOX, FN): the map and box from P, L,
+ * H, the output prefilled, the inputs checked unchanged; the output ends
+ * in olo, ohi. */
+#define CALL_ONE(FP, PROJ, BOX, FN) do {                                 \
+        PROJ p, p0;                                                      \
+        BOX b, b0, o;                                                    \
+        for (i = 0; i < 4; i++)                                          \
+            for (j = 0; j < 4; j++)                                      \
+                p.m[i][j] = (FP)P[i][j];                                 \
+        for (i = 0; i < 3; i++) {                                        \
+            b.lo[i] = (FP)L[i];                                          \
+            b.hi[i] = (FP)H[i];                                          \
+            o.lo[i] = o.hi[i] = (FP)fz_fill();                           \
+        }                                                                \
+        p0 = p;                                                          \
+        b0 = b;                                                          \
+        st = in_place ? FN(&p, &b, &b) : FN(&p, &b, &o);                 \
+        if (memcmp(&p, &p0, sizeof p))                                   \
+            fz_fail("the map was changed");                              \
+        if (in_place)                                                    \
+            o = b;                                                       \
+        else if (memcmp(&b, &b0, sizeof b))                              \
+            fz_fail("the input box was changed");                        \
+        for (i = 0; i < 3; i++) {                                        \
+            olo[i] = o.lo[i];                                            \
+            ohi[i] = o.hi[i];                                            \
+        }                                                                \
+    } while (0)
+
 static cbx_status call(int is32, int in_place, double olo[3], double ohi[3])
 {
     int i, j;
     cbx_status st;
-    if (!is32) {
-        cbx_proj p, p0;
-        cbx_box b, b0, o;
-        for (i = 0; i < 4; i++)
-            for (j = 0; j < 4; j++)
-                p.m[i][j] = P[i][j];
-        for (i = 0; i < 3; i++) {
-            b.lo[i] = L[i];
-            b.hi[i] = H[i];
-            o.lo[i] = o.hi[i] = fz_fill();
-        }
-        p0 = p;
-        b0 = b;
-        st = in_place ? cbx_project_box(&p, &b, &b) : cbx_project_box(&p, &b, &o);
-        if (memcmp(&p, &p0, sizeof p))
-            fz_fail("the map was changed");
-        if (in_place)
-            o = b;
-        else if (memcmp(&b, &b0, sizeof b))
-            fz_fail("the input box was changed");
-        for (i = 0; i < 3; i++) {
-            olo[i] = o.lo[i];
-            ohi[i] = o.hi[i];
-        }
-    } else {
-        cbx_projf p, p0;
-        cbx_boxf b, b0, o;
-        for (i = 0; i < 4; i++)
-            for (j = 0; j < 4; j++)
-                p.m[i][j] = (float)P[i][j];
-        for (i = 0; i < 3; i++) {
-            b.lo[i] = (float)L[i];
-            b.hi[i] = (float)H[i];
-            o.lo[i] = o.hi[i] = (float)fz_fill();
-        }
-        p0 = p;
-        b0 = b;
-        st = in_place ? cbx_project_boxf(&p, &b, &b) : cbx_project_boxf(&p, &b, &o);
-        if (memcmp(&p, &p0, sizeof p))
-            fz_fail("the map was changed");
-        if (in_place)
-            o = b;
-        else if (memcmp(&b, &b0, sizeof b))
-            fz_fail("the input box was changed");
-        for (i = 0; i < 3; i++) {
-            olo[i] = o.lo[i];
-            ohi[i] = o.hi[i];
-        }
-    }
+    if (!is32)
+        CALL_ONE(double, cbx_proj, cbx_box, cbx_project_box);
+    else
+        CALL_ONE(float, cbx_projf, cbx_boxf, cbx_project_boxf);
     return st;
 }
 
