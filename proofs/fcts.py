@@ -22,6 +22,10 @@ follow the layers of src/:
     proj     the projective unit (proofs/proj.c, proj_f.c): functions of
              src/algo/cbx_project.c and src/core/cbx_quot.h, minus split
     projsplit  the same unit's functions marked for -wp-split
+    ball     the sphere and ellipsoid bounds (src/algo/cbx_sphere.c), minus
+             split: proven with the lemmas of specs/cbx_ball.h
+             (CBX_BALL_LEMMAS), which no other goal of the unit carries
+    ballsplit  the same file's functions marked for -wp-split
 
 The rest of a unit (the algorithms of src/algo/*.c) is what a job's
 -wp-skip-fct of these groups leaves.
@@ -72,8 +76,9 @@ def group(defs, g):
         return f.startswith(folder) and f.endswith(ext)
     imat = ('src/f64/cbx_imat.c', 'src/f64/cbx_ikernel.h')
     proj = ('src/algo/cbx_project.c', 'src/core/cbx_quot.h')
+    ball = ('src/algo/cbx_sphere.c',)
     if g == 'split':
-        return [n for f, n, s in defs if s]
+        return [n for f, n, s in defs if s and f not in ball]
     if g == 'kernels':
         return [n for f, n, s in defs if not s and (under(f, 'src/core/', '.h') or under(f, 'src/algo/', '.h'))]
     if g == 'f64':
@@ -84,6 +89,10 @@ def group(defs, g):
         return [n for f, n, s in defs if not s and f in proj]
     if g == 'projsplit':
         return [n for f, n, s in defs if s and f in proj]
+    if g == 'ball':
+        return [n for f, n, s in defs if not s and f in ball]
+    if g == 'ballsplit':
+        return [n for f, n, s in defs if s and f in ball]
     sys.exit('fcts.py: unknown group %s' % g)
 
 

@@ -9,7 +9,8 @@
 #   K64, K32  the rounding primitives and kernels (src/core/*.h,
 #             src/algo/*.h), without -wp-split (measured: half the goals
 #             and half the prover calls of the split run)
-#   B64a      binary64-only code (src/f64/*.c: tight mode, classes, motion)
+#   B64a      binary64-only code (src/f64/*.c: tight mode, classes, motion),
+#             with the motion lemmas of specs/cbx_class.h (CBX_MOTION_LEMMAS)
 #   B64b, B32 the rest: the algorithms of src/algo/*.c (public functions,
 #             domain checks), without -wp-split (splitting the behaviors'
 #             postconditions multiplies goals)
@@ -19,6 +20,10 @@
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
 #             -wp-split; PA64, PA32 its functions marked for -wp-split;
 #             SP64, SP32 its smoke tests
+#   BS64, BS32  the sphere and ellipsoid bounds (src/algo/cbx_sphere.c) with
+#             the lemmas of specs/cbx_ball.h (CBX_BALL_LEMMAS), which no other
+#             job of proofs/all.c carries; BSA64, BSA32 that file's functions
+#             marked for -wp-split
 #   S64, S32  the smoke tests alone (-wp-smoke-tests, every regular goal
 #             deselected): a smoke goal "passes" when CVC4 can NOT derive
 #             false from its context within CBX_SMOKE_STEPS resource units
@@ -48,6 +53,10 @@ WP="-wp -wp-rte -wp-par $PAR"   # + the provers, limits and cache of each pass (
 # smallest budget of 40k, 60k, 80k that catches every case of
 # scripts/smoke_teeth.sh with margin).
 SMOKE="-wp -wp-rte -wp-smoke-tests ${CBX_SMOKE_OPTS:--wp-no-smoke-dead-call} -wp-prover cvc4r$fam -wp-steps ${CBX_SMOKE_STEPS:-80000} -wp-smoke-timeout ${CBX_SMOKE_TIMEOUT:-30} -wp-par $PAR -wp-cache none"
+# the sphere's lemmas (specs/cbx_ball.h): only in the jobs of cbx_sphere.c.
+# The smoke jobs (S64, S32) do without them: a lemma is a theorem (jobs L),
+# so it cannot make a consistent context inconsistent.
+BALL="-cpp-extra-args=-DCBX_BALL_LEMMAS"
 NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@invariant,-@variant,-@breaks,-@continues,-@returns,-@complete_behaviors,-@disjoint_behaviors,-@terminates,-@decreases,-@check"
 # The functions of each job come from the tree (proofs/fcts.py): the
 # primitives and kernels (src/core/*.h, src/algo/*.h: jobs K), the
@@ -66,13 +75,15 @@ case $name in
   SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SEL="-wp-fct $(fcts $TU proj),$(fcts $TU projsplit)" ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
+  BS64|BS32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP $BALL"; SEL="-wp-fct $(fcts $TU ball)" ;;
+  BSA64|BSA32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split $BALL"; SEL="-wp-fct $(fcts $TU ballsplit)" ;;
   A64) TU=proofs/all.c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU split)" ;;
   A32) TU=proofs/all_f.c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU split)" ;;
   K64) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU kernels)" ;;
   K32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU kernels)" ;;
-  B64a) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU f64)" ;;
-  B64b) TU=proofs/all.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split),$(fcts $TU f64)" ;;
-  B32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split)" ;;
+  B64a) TU=proofs/all.c; OPTS="$WP -cpp-extra-args=-DCBX_MOTION_LEMMAS"; SEL="-wp-fct $(fcts $TU f64)" ;;
+  B64b) TU=proofs/all.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split),$(fcts $TU f64),$(fcts $TU ball),$(fcts $TU ballsplit)" ;;
+  B32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split),$(fcts $TU ball),$(fcts $TU ballsplit)" ;;
   S64) TU=proofs/all.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;
   S32) TU=proofs/all_f.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;
   *) echo "job.sh: unknown job $name" >&2; exit 2 ;;

@@ -4,6 +4,8 @@
  * the lemmas. */
 #define CBX_FRAMAC_ONLY_64 1
 #define CBX_IMAT_LEMMAS 1
+#define CBX_BALL_LEMMAS 1
+#define CBX_MOTION_LEMMAS 1
 #define CBX_PROJ_LEMMAS 1
 #include "certbox.h"
 

@@ -32,6 +32,9 @@ JOBS = {
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
     'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',
     'SP64': 'binary64 projective-bound smoke tests', 'SP32': 'binary32 projective-bound smoke tests',
+    'BS64': 'binary64 spheres and ellipsoids (src/algo/cbx_sphere.c, with its lemmas)',
+    'BS32': 'binary32 spheres and ellipsoids (src/algo/cbx_sphere.c, with its lemmas)',
+    'BSA64': 'binary64 spheres and ellipsoids, -wp-split', 'BSA32': 'binary32 spheres and ellipsoids, -wp-split',
 }
 FAMILY = {'64': 'binary64 (double): `cbx_transform_box`, ...',
           '32': 'binary32 (float): `cbx_transform_boxf`, ... (same sources)'}

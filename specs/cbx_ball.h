@@ -25,6 +25,35 @@
       0 <= r && nrm3(b0, b1, b2) <= r*r;
     predicate sq_le(real a, real b) = a*a <= b*b;
 
+    // [lo, hi] holds t + b.p for every p of the unit ball.
+    predicate ball_axis(real lo, real hi, real b0, real b1, real b2, real t) =
+      \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
+        lo <= dot3(b0, b1, b2, p0, p1, p2) + t <= hi;
+
+    // The same statement without a quantifier (equivalent to it): both
+    // distances from t to the ends are at least the row norm.  The code
+    // establishes this form; lemma cover_ball (below) turns it into ball_axis.
+    predicate ball_cover(real lo, real hi, real b0, real b1, real b2, real t) =
+      lo <= t && t <= hi
+      && nrm3(b0, b1, b2) <= (t - lo)*(t - lo)
+      && nrm3(b0, b1, b2) <= (hi - t)*(hi - t);
+
+    // The exact row norm |b| = sqrt(b.b) (the exact half-width of axis i):
+    // the tightness statements (specs/cbx_spec.h, ball_tight) compare the
+    // ends with it; the lemmas of rnorm3 below (abs_sq, rnorm3_def,
+    // ...) are what src/algo/cbx_sphere.c uses of it (proven in pass L: in
+    // WP's float context CVC4 does not even find |x| |x| = x x).
+    logic real rnorm3(real a0, real a1, real a2) = \sqrt(nrm3(a0, a1, a2));
+*/
+
+/* The lemmas: only in the proof units that use them (CBX_BALL_LEMMAS: the
+ * lemma jobs, which prove them, and the jobs of src/algo/cbx_sphere.c).  A
+ * global lemma is a hypothesis of every goal of its unit: with these 22 in
+ * every goal of proofs/all.c, the prover time of goals that never use them
+ * grew by a fifth (measured 2026-11-27: 70 s against 55 s on the same 384
+ * goals of the interval and center kernels). */
+#ifdef CBX_BALL_LEMMAS
+/*@
     // Squaring is monotone on nonnegative reals (both directions).
     lemma sq_mono: \forall real a, b; 0 <= a <= b ==> sq_le(a, b);
     lemma sq_mono_inv: \forall real a, b; 0 <= b ==> sq_le(a, b) ==> -b <= a <= b;
@@ -43,19 +72,7 @@
       in_ball(p0, p1, p2) ==>
       dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2) <= nrm3(m0, m1, m2);
 
-    // [lo, hi] holds t + b.p for every p of the unit ball.
-    predicate ball_axis(real lo, real hi, real b0, real b1, real b2, real t) =
-      \forall real p0, p1, p2; in_ball(p0, p1, p2) ==>
-        lo <= dot3(b0, b1, b2, p0, p1, p2) + t <= hi;
-
-    // The same statement without a quantifier (equivalent to it): both
-    // distances from t to the ends are at least the row norm.  The code
-    // establishes this form; lemma cover_ball turns it into ball_axis.
-    predicate ball_cover(real lo, real hi, real b0, real b1, real b2, real t) =
-      lo <= t && t <= hi
-      && nrm3(b0, b1, b2) <= (t - lo)*(t - lo)
-      && nrm3(b0, b1, b2) <= (hi - t)*(hi - t);
-
+    // ball_cover gives ball_axis (the quantifier over p stays in these two).
     lemma cover_dot: \forall real lo, hi, b0, b1, b2, t, p0, p1, p2;
       ball_cover(lo, hi, b0, b1, b2, t) ==> in_ball(p0, p1, p2) ==>
       sq_le(dot3(b0, b1, b2, p0, p1, p2), t - lo)
@@ -80,12 +97,6 @@
     lemma sq_bound_up: \forall real b0, b1, b2, r, q;
       sq_bound(b0, b1, b2, r) ==> r <= q ==> sq_bound(b0, b1, b2, q);
 
-    // The exact row norm |b| = sqrt(b.b) (the exact half-width of axis i):
-    // the tightness statements (specs/cbx_spec.h, ball_tight) compare the
-    // ends with it; the lemmas below are what src/algo/cbx_sphere.c uses of it
-    // (proven in pass L: in WP's float context CVC4 does not even find
-    // |x| |x| = x x).
-    logic real rnorm3(real a0, real a1, real a2) = \sqrt(nrm3(a0, a1, a2));
     // One step each (the provers do not chain instances in the float context).
     lemma abs_sq: \forall real x; \abs(x) * \abs(x) == x * x;
     lemma rnorm3_def: \forall real a0, a1, a2;
@@ -114,4 +125,5 @@
     lemma sq_le_sum: \forall real s0, s1, s2, y0, y1, y2;
       sq_le(s0, y0) ==> sq_le(s1, y1) ==> sq_le(s2, y2) ==> nrm3(s0, s1, s2) <= nrm3(y0, y1, y2);
 */
+#endif /* CBX_BALL_LEMMAS */
 #endif /* CBX_BALL_H */

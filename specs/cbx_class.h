@@ -75,43 +75,27 @@
     // ---------------------------------------------------------------------
     logic real lerp(real s, real x, real y) = (1 - s) * x + s * y;
 
-    // r is below (above) both ends: then below (above) every point between.
-    // (Named predicates: the lemmas' conclusions are their triggers.)
+    // r is below (above) both ends: then below (above) every point between
+    // (lemmas lerp_below, lerp_above, below).  Named predicates: the lemmas'
+    // conclusions are their triggers.
     predicate between_lo(real r, real x, real y, real s) = r <= lerp(s, x, y);
     predicate between_hi(real r, real x, real y, real s) = lerp(s, x, y) <= r;
-    lemma lerp_below: \forall real r, x, y, s;
-      0 <= s <= 1 ==> r <= x ==> r <= y ==> between_lo(r, x, y, s);
-    lemma lerp_above: \forall real r, x, y, s;
-      0 <= s <= 1 ==> r >= x ==> r >= y ==> between_hi(r, x, y, s);
 
-    // The value of row M(s) at point p, and its split into the two ends'.
+    // The value of row M(s) at point p (lemma mrow_split, below: its split
+    // into the two ends').
     logic real mrow(real s, real m0, real m1, real m2, real t, real n0, real n1, real n2, real u,
                     real p0, real p1, real p2) =
       lerp(s, m0, n0) * p0 + lerp(s, m1, n1) * p1 + lerp(s, m2, n2) * p2 + lerp(s, t, u);
-    lemma mrow_split: \forall real s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
-      mrow(s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2)
-        == lerp(s, m0*p0 + m1*p1 + m2*p2 + t, n0*p0 + n1*p1 + n2*p2 + u);
 
     // r <= (M(s) p)_i, r >= (M(s) p)_i: named, so that the lemmas below
-    // have a trigger holding all their variables.
+    // (mrow_below, mrow_ge_lerp, mrow_above) have a trigger holding all
+    // their variables.
     predicate mrow_le(real r, real s, real m0, real m1, real m2, real t,
                       real n0, real n1, real n2, real u, real p0, real p1, real p2) =
       r <= mrow(s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
     predicate mrow_ge(real r, real s, real m0, real m1, real m2, real t,
                       real n0, real n1, real n2, real u, real p0, real p1, real p2) =
       mrow(s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2) <= r;
-
-    // A value below (above) both end images of p is below (above) its image
-    // under M(s), 0 <= s <= 1.
-    lemma mrow_below: \forall real r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
-      0 <= s <= 1 ==> r <= m0*p0 + m1*p1 + m2*p2 + t ==> r <= n0*p0 + n1*p1 + n2*p2 + u ==>
-      mrow_le(r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
-    lemma mrow_ge_lerp: \forall real r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
-      between_hi(r, m0*p0 + m1*p1 + m2*p2 + t, n0*p0 + n1*p1 + n2*p2 + u, s) ==>
-      mrow_ge(r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
-    lemma mrow_above: \forall real r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
-      0 <= s <= 1 ==> r >= m0*p0 + m1*p1 + m2*p2 + t ==> r >= n0*p0 + n1*p1 + n2*p2 + u ==>
-      mrow_ge(r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
 
     // r is below (above) M(s) c for every corner c of the box.
     predicate mot_below8(real r, real s, real m0, real m1, real m2, real t,
@@ -199,4 +183,32 @@
                     b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]);
 */
 
+/* The motion lemmas: only in the units that use them (CBX_MOTION_LEMMAS: the
+ * lemma job L64, which proves them, and job B64a, which proves
+ * src/f64/cbx_motion.c), not as hypotheses of every goal of proofs/all.c. */
+#ifdef CBX_MOTION_LEMMAS
+/*@ // r below (above) both ends is below (above) every point between.
+    lemma lerp_below: \forall real r, x, y, s;
+      0 <= s <= 1 ==> r <= x ==> r <= y ==> between_lo(r, x, y, s);
+    lemma lerp_above: \forall real r, x, y, s;
+      0 <= s <= 1 ==> r >= x ==> r >= y ==> between_hi(r, x, y, s);
+
+    // Row M(s) at p is the interpolation of the two ends' values at p.
+    lemma mrow_split: \forall real s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
+      mrow(s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2)
+        == lerp(s, m0*p0 + m1*p1 + m2*p2 + t, n0*p0 + n1*p1 + n2*p2 + u);
+
+    // A value below (above) both end images of p is below (above) its image
+    // under M(s), 0 <= s <= 1.
+    lemma mrow_below: \forall real r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
+      0 <= s <= 1 ==> r <= m0*p0 + m1*p1 + m2*p2 + t ==> r <= n0*p0 + n1*p1 + n2*p2 + u ==>
+      mrow_le(r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
+    lemma mrow_ge_lerp: \forall real r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
+      between_hi(r, m0*p0 + m1*p1 + m2*p2 + t, n0*p0 + n1*p1 + n2*p2 + u, s) ==>
+      mrow_ge(r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
+    lemma mrow_above: \forall real r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
+      0 <= s <= 1 ==> r >= m0*p0 + m1*p1 + m2*p2 + t ==> r >= n0*p0 + n1*p1 + n2*p2 + u ==>
+      mrow_ge(r, s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2);
+*/
+#endif
 #endif /* CBX_CLASS_SPEC_H */

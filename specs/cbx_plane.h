@@ -84,10 +84,6 @@
     // (p2 = 0) and lemma disk_plain restates it in plain terms.
     predicate disk_cover(real lo, real hi, real b0, real b1, real t) =
       \forall real p0, p1; in_ball(p0, p1, 0) ==> lo <= dot3(b0, b1, 0, p0, p1, 0) + t <= hi;
-    lemma ball_disk: \forall real lo, hi, b0, b1, t;
-      ball_axis(lo, hi, b0, b1, 0, t) ==> disk_cover(lo, hi, b0, b1, t);
-    lemma disk_plain: \forall real lo, hi, b0, b1, t, p0, p1;
-      disk_cover(lo, hi, b0, b1, t) ==> p0*p0 + p1*p1 <= 1 ==> lo <= b0*p0 + b1*p1 + t <= hi;
 
     // Axis i of the disk's box: inside the sphere's domain (specs/cbx_spec.h:
     // sph_dom) finite, covering the disk's image, within ball_tight of the
@@ -114,3 +110,15 @@
           && ball_tight(lo, hi, r0*d0, r1*d1, 0, c)))
       && (!ell2_dom(r0, r1, d0, d1, c) ==> \is_minus_infinity(lo) && \is_plus_infinity(hi));
 */
+
+/* The disk's lemmas (above: ball_disk, disk_plain), with specs/cbx_ball.h's
+ * only in the proof jobs of src/algo/cbx_sphere.c and the lemma jobs
+ * (CBX_BALL_LEMMAS). */
+#ifdef CBX_BALL_LEMMAS
+/*@
+    lemma ball_disk: \forall real lo, hi, b0, b1, t;
+      ball_axis(lo, hi, b0, b1, 0, t) ==> disk_cover(lo, hi, b0, b1, t);
+    lemma disk_plain: \forall real lo, hi, b0, b1, t, p0, p1;
+      disk_cover(lo, hi, b0, b1, t) ==> p0*p0 + p1*p1 <= 1 ==> lo <= b0*p0 + b1*p1 + t <= hi;
+*/
+#endif

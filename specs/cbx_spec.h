@@ -450,16 +450,10 @@
 /*@ // ---------------------------------------------------------------------
     // Spheres and ellipsoids (src/algo/cbx_sphere.c); the format-independent
     // Cauchy-Schwarz chain is specs/cbx_ball.h.
-    // Scaling a row by 2^600 scales its norm by 2^600 (row_radius; CBX_SUP,
-    // 2^90 in binary32).
+    // (The lemmas, scaling by 2^600 and the ellipsoid's domain: below.)
     // ---------------------------------------------------------------------
-    lemma sq_bound_scale: \forall real b0, b1, b2, r;
-      sq_bound(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP, r) ==> sq_bound(b0, b1, b2, r*CBX_SDN);
-
     // |x y| <= 2^508 (CBX_EP): the products of an ellipsoid's rows.
     predicate in_dom508(real x, real y) = -CBX_EP <= x*y <= CBX_EP;
-    lemma cls_254: \forall real m, c; cls(m, c, CBX_EB, CBX_EB) ==> in_dom508(m, c);
-
 
     // Tightness of a ball's axis: each end within 80u (|t| + |b|) + 2^-1064
     // of the exact end t -+ |b| (binary32: 80u and 2^-139).
@@ -486,6 +480,18 @@
       cls(r0, d0, CBX_EB, CBX_EB) && cls(r1, d1, CBX_EB, CBX_EB)
       && cls(r2, d2, CBX_EB, CBX_EB) && -CBX_RT <= c <= CBX_RT;
 */
+
+/* The sphere's lemmas, with specs/cbx_ball.h's (CBX_BALL_LEMMAS: the proof
+ * jobs of src/algo/cbx_sphere.c and the lemma jobs only). */
+#ifdef CBX_BALL_LEMMAS
+/*@ // Scaling a row by 2^600 scales its norm by 2^600 (row_radius; CBX_SUP,
+    // 2^90 in binary32).
+    lemma sq_bound_scale: \forall real b0, b1, b2, r;
+      sq_bound(b0*CBX_SUP, b1*CBX_SUP, b2*CBX_SUP, r) ==> sq_bound(b0, b1, b2, r*CBX_SDN);
+    // The ellipsoid's classes keep its rows' products within 2^508.
+    lemma cls_254: \forall real m, c; cls(m, c, CBX_EB, CBX_EB) ==> in_dom508(m, c);
+*/
+#endif
 
 /*@ predicate ell_nan(cbx_fp *center, cbx_fp *radii, cbx_fp (*rot)[3]) =
          \is_NaN(center[0]) || \is_NaN(center[1]) || \is_NaN(center[2])
