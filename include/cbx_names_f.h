@@ -76,14 +76,14 @@
 #define c2b_ok c2b_ok_f
 #define b2c_axis b2c_axis_f
 #define c2b_axis c2b_axis_f
-#define sq_bound_scale sq_bound_scale_f
 #define in_dom508 in_dom_ep_f
-#define cls_254 cls_ep_f
 #define ball_gap ball_gap_f
 #define ball_tight ball_tight_f
 #define sph_dom sph_dom_f
 #define sph_axis sph_axis_f
 #define ell_dom ell_dom_f
+#define sq_bound_scale sq_bound_scale_f
+#define cls_254 cls_ep_f
 #define ell_nan ell_nan_f
 #define ell_row_dom ell_row_dom_f
 #define ell_axis ell_axis_f
@@ -106,13 +106,13 @@
 #define caxis2_ok caxis2_ok_f
 #define crow2_ok crow2_ok_f
 #define disk_cover disk_cover_f
-#define ball_disk ball_disk_f
-#define disk_plain disk_plain_f
 #define disk_dom disk_dom_f
 #define disk_axis disk_axis_f
 #define ell2_nan ell2_nan_f
 #define ell2_dom ell2_dom_f
 #define ell2_axis ell2_axis_f
+#define ball_disk ball_disk_f
+#define disk_plain disk_plain_f
 #define proj_nan proj_nan_f
 #define prow_fast prow_fast_f
 #define proj_fast proj_fast_f
@@ -213,14 +213,14 @@
 #undef c2b_ok
 #undef b2c_axis
 #undef c2b_axis
-#undef sq_bound_scale
 #undef in_dom508
-#undef cls_254
 #undef ball_gap
 #undef ball_tight
 #undef sph_dom
 #undef sph_axis
 #undef ell_dom
+#undef sq_bound_scale
+#undef cls_254
 #undef ell_nan
 #undef ell_row_dom
 #undef ell_axis
@@ -243,13 +243,13 @@
 #undef caxis2_ok
 #undef crow2_ok
 #undef disk_cover
-#undef ball_disk
-#undef disk_plain
 #undef disk_dom
 #undef disk_axis
 #undef ell2_nan
 #undef ell2_dom
 #undef ell2_axis
+#undef ball_disk
+#undef disk_plain
 #undef proj_nan
 #undef prow_fast
 #undef proj_fast
