@@ -118,6 +118,7 @@
 #define proj_fast proj_fast_f
 #define perr perr_f
 #define pclear pclear_f
+#define wenc wenc_f
 #define pnear pnear_f
 #define ptol ptol_f
 #define pt_lo pt_lo_f
@@ -255,6 +256,7 @@
 #undef proj_fast
 #undef perr
 #undef pclear
+#undef wenc
 #undef pnear
 #undef ptol
 #undef pt_lo

@@ -41,6 +41,13 @@
       CBX_U12 * pmag(m0, m1, m2, t, x, y, z) + CBX_ETA512;
     predicate pclear(real w0, real w1, real w2, real wt, real x, real y, real z) =
       aff(w0, w1, w2, wt, x, y, z) > perr(w0, w1, w2, wt, x, y, z);
+    // [wl, wh] encloses W at the corner to within the kernel's rounding
+    // (what the interval kernel returns there: computed once per corner and
+    // shared by the three output axes).
+    predicate wenc(real wl, real wh, real w0, real w1, real w2, real wt, real x, real y, real z) =
+      wl <= aff(w0, w1, w2, wt, x, y, z) <= wh
+      && aff(w0, w1, w2, wt, x, y, z) - wl <= perr(w0, w1, w2, wt, x, y, z)
+      && wh - aff(w0, w1, w2, wt, x, y, z) <= perr(w0, w1, w2, wt, x, y, z);
     predicate pnear(real m0, real m1, real m2, real t, real w0, real w1, real w2, real wt,
                     real x, real y, real z) =
       (\abs(aff(m0, m1, m2, t, x, y, z)) + perr(m0, m1, m2, t, x, y, z)) * (2*CBX_QS) + CBX_ETA

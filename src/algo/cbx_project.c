@@ -6,8 +6,9 @@
  * is affine for each c, so the bound of X_i / W over the box is reached at
  * one of its 8 corners (specs/cbx_proj_logic.h: plo_box, phi_box).  At each
  * corner the proven interval kernel (src/algo/cbx_kernel.h) on the point
- * box encloses X_i and W; the quotient of those enclosures is rounded
- * outward (src/core/cbx_quot.h: cbx_div_dn, cbx_div_up): lower end
+ * box encloses W (once per corner, shared by the three axes) and X_i; the
+ * quotient of those enclosures is rounded outward (src/core/cbx_quot.h:
+ * cbx_div_dn, cbx_div_up): lower end
  * x_lo / w_hi when x_lo >= 0, else x_lo / w_lo (the upper end mirrored).
  * The axis is the least and the greatest of the 8 corners' ends.
  *
@@ -93,6 +94,11 @@ static int proj_in(const cbx_proj *p, const cbx_box *b)
  * ok 1 (a quotient out of range: not pnear). */
 typedef struct cbx_qcorner { cbx_fp lo, hi, wl; int ok; } cbx_qcorner;
 
+/* W's enclosure at a corner (the interval kernel on the point box), computed
+ * once per corner and shared by the three output axes: 8 kernel rows for W
+ * per box instead of 24. */
+typedef struct cbx_wc { cbx_fp lo, hi; } cbx_wc;
+
 /* Lemma functions (no code): one corner's ends, sound and tight, from the
  * kernel's enclosures [a, .] of X and [wl, wh] of W, the quotient's
  * multiplied-out bounds, and the products of the case analysis (prod_le:
@@ -101,6 +107,24 @@ typedef struct cbx_qcorner { cbx_fp lo, hi, wl; int ok; } cbx_qcorner;
 #define PX aff(m0, m1, m2, t, x, y, z)
 #define PW aff(w0, w1, w2, wt, x, y, z)
 #define PEW perr(w0, w1, w2, wt, x, y, z)
+/*@ requires fin: prow_fast(w0, w1, w2, wt);
+    requires finp: \is_finite(x) && \is_finite(y) && \is_finite(z);
+    requires rp: -CBX_SB <= x <= CBX_SB && -CBX_SB <= y <= CBX_SB && -CBX_SB <= z <= CBX_SB;
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures enc: wenc(\result.lo, \result.hi, w0, w1, w2, wt, x, y, z);
+*/
+static cbx_wc proj_wc(cbx_fp w0, cbx_fp w1, cbx_fp w2, cbx_fp wt, cbx_fp x, cbx_fp y, cbx_fp z)
+{
+    cbx_wc r;
+    cbx_fast_row(w0, w1, w2, wt, x, x, y, y, z, z);
+    cbx_ends we = cbx_axis(w0, w1, w2, wt, x, x, y, y, z, z);
+    /*@ assert ew: we.lo <= PW <= we.hi && PW - we.lo <= PEW && we.hi - PW <= PEW; */
+    r.lo = we.lo;
+    r.hi = we.hi;
+    return r;
+}
+
 /*@ requires w: 0 < wl <= PW <= wh && PW - wl <= PEW && wh - PW <= PEW;
     requires x: a <= PX && PX - a <= perr(m0, m1, m2, t, x, y, z);
     requires pos: a >= 0 ==> r*wh <= a && a - r*wh <= CBX_U8*a + CBX_ETA16*wh
@@ -160,6 +184,8 @@ static void corner_hi(cbx_fp r, cbx_fp a, cbx_fp wl, cbx_fp wh, cbx_fp m0, cbx_f
 /*@ requires fin: prow_fast(m0, m1, m2, t) && prow_fast(w0, w1, w2, wt);
     requires finp: \is_finite(x) && \is_finite(y) && \is_finite(z);
     requires rp: -CBX_SB <= x <= CBX_SB && -CBX_SB <= y <= CBX_SB && -CBX_SB <= z <= CBX_SB;
+    requires wf: \is_finite(we.lo) && \is_finite(we.hi);
+    requires we: wenc(we.lo, we.hi, w0, w1, w2, wt, x, y, z);
     assigns \nothing;
     ensures st: 0 <= \result.ok <= 2;
     ensures behind: \result.ok == 0 ==> !pclear(w0, w1, w2, wt, x, y, z);
@@ -175,13 +201,11 @@ static void corner_hi(cbx_fp r, cbx_fp a, cbx_fp wl, cbx_fp wh, cbx_fp m0, cbx_f
 */
 static cbx_qcorner proj_corner(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
                                cbx_fp w0, cbx_fp w1, cbx_fp w2, cbx_fp wt,
-                               cbx_fp x, cbx_fp y, cbx_fp z)
+                               cbx_fp x, cbx_fp y, cbx_fp z, cbx_wc we)
 {
     cbx_qcorner r;
     cbx_fast_row(m0, m1, m2, t, x, x, y, y, z, z);
-    cbx_fast_row(w0, w1, w2, wt, x, x, y, y, z, z);
     cbx_ends xe = cbx_axis(m0, m1, m2, t, x, x, y, y, z, z);
-    cbx_ends we = cbx_axis(w0, w1, w2, wt, x, x, y, y, z, z);
     /*@ assert ex: xe.lo <= PX <= xe.hi && PX - xe.lo <= perr(m0, m1, m2, t, x, y, z)
                   && xe.hi - PX <= perr(m0, m1, m2, t, x, y, z); */
     /*@ assert ew: we.lo <= PW <= we.hi && PW - we.lo <= PEW && we.hi - PW <= PEW; */
@@ -235,6 +259,8 @@ static cbx_qcorner proj_corner(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
     P(l0, l1, l2, 0) && P(h0, l1, l2, 1) && P(l0, h1, l2, 2) && P(h0, h1, l2, 3) && \
     P(l0, l1, h2, 4) && P(h0, l1, h2, 5) && P(l0, h1, h2, 6) && P(h0, h1, h2, 7)
 #define CBX_WPOS(x, y, z, k) 0 < v##k <= aff(w0, w1, w2, wt, x, y, z)
+#define CBX_WENC(x, y, z, k) \is_finite(v##k.lo) && \is_finite(v##k.hi) \
+    && wenc(v##k.lo, v##k.hi, w0, w1, w2, wt, x, y, z)
 /*@ requires pos: CBX_CORNERS(CBX_WPOS, l0, h0, l1, h1, l2, h2);
     requires rb: l0 <= h0 && l1 <= h1 && l2 <= h2;
     assigns \nothing;
@@ -382,6 +408,7 @@ typedef struct cbx_paxis { cbx_fp lo, hi; int ok; } cbx_paxis;
                    && \is_finite(l2) && \is_finite(h2);
     requires rb: -CBX_SB <= l0 <= h0 <= CBX_SB && -CBX_SB <= l1 <= h1 <= CBX_SB
                  && -CBX_SB <= l2 <= h2 <= CBX_SB;
+    requires we: CBX_CORNERS(CBX_WENC, l0, h0, l1, h1, l2, h2);
     assigns \nothing;
     ensures st: 0 <= \result.ok <= 2;
     ensures behind: \result.ok == 0 ==> !pclear8(w0, w1, w2, wt, l0, h0, l1, h1, l2, h2);
@@ -392,17 +419,19 @@ typedef struct cbx_paxis { cbx_fp lo, hi; int ok; } cbx_paxis;
 */
 static cbx_paxis proj_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
                            cbx_fp w0, cbx_fp w1, cbx_fp w2, cbx_fp wt,
-                           cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
+                           cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2,
+                           cbx_wc v0, cbx_wc v1, cbx_wc v2, cbx_wc v3,
+                           cbx_wc v4, cbx_wc v5, cbx_wc v6, cbx_wc v7)
 {
     cbx_paxis r;
-    cbx_qcorner c0 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, l1, l2);
-    cbx_qcorner c1 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, l1, l2);
-    cbx_qcorner c2 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, h1, l2);
-    cbx_qcorner c3 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, h1, l2);
-    cbx_qcorner c4 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, l1, h2);
-    cbx_qcorner c5 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, l1, h2);
-    cbx_qcorner c6 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, h1, h2);
-    cbx_qcorner c7 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, h1, h2);
+    cbx_qcorner c0 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, l1, l2, v0);
+    cbx_qcorner c1 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, l1, l2, v1);
+    cbx_qcorner c2 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, h1, l2, v2);
+    cbx_qcorner c3 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, h1, l2, v3);
+    cbx_qcorner c4 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, l1, h2, v4);
+    cbx_qcorner c5 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, l1, h2, v5);
+    cbx_qcorner c6 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, l0, h1, h2, v6);
+    cbx_qcorner c7 = proj_corner(m0, m1, m2, t, w0, w1, w2, wt, h0, h1, h2, v7);
     int ok = c0.ok;
     ok = c1.ok < ok ? c1.ok : ok;
     ok = c2.ok < ok ? c2.ok : ok;
@@ -471,9 +500,20 @@ cbx_status cbx_project_box(const cbx_proj *p, const cbx_box *in, cbx_box *out)
         cbx_fp a10 = p->m[1][0], a11 = p->m[1][1], a12 = p->m[1][2], a13 = p->m[1][3];
         cbx_fp a20 = p->m[2][0], a21 = p->m[2][1], a22 = p->m[2][2], a23 = p->m[2][3];
         cbx_fp w0 = p->m[3][0], w1 = p->m[3][1], w2 = p->m[3][2], wt = p->m[3][3];
-        cbx_paxis r0 = proj_axis(a00, a01, a02, a03, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2);
-        cbx_paxis r1 = proj_axis(a10, a11, a12, a13, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2);
-        cbx_paxis r2 = proj_axis(a20, a21, a22, a23, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2);
+        cbx_wc v0 = proj_wc(w0, w1, w2, wt, l0, l1, l2);
+        cbx_wc v1 = proj_wc(w0, w1, w2, wt, h0, l1, l2);
+        cbx_wc v2 = proj_wc(w0, w1, w2, wt, l0, h1, l2);
+        cbx_wc v3 = proj_wc(w0, w1, w2, wt, h0, h1, l2);
+        cbx_wc v4 = proj_wc(w0, w1, w2, wt, l0, l1, h2);
+        cbx_wc v5 = proj_wc(w0, w1, w2, wt, h0, l1, h2);
+        cbx_wc v6 = proj_wc(w0, w1, w2, wt, l0, h1, h2);
+        cbx_wc v7 = proj_wc(w0, w1, w2, wt, h0, h1, h2);
+        cbx_paxis r0 = proj_axis(a00, a01, a02, a03, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2,
+                                 v0, v1, v2, v3, v4, v5, v6, v7);
+        cbx_paxis r1 = proj_axis(a10, a11, a12, a13, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2,
+                                 v0, v1, v2, v3, v4, v5, v6, v7);
+        cbx_paxis r2 = proj_axis(a20, a21, a22, a23, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2,
+                                 v0, v1, v2, v3, v4, v5, v6, v7);
         if (r0.ok == 0 || r1.ok == 0 || r2.ok == 0) {
             set_whole(out);
             return CBX_EBEHIND;
