@@ -147,51 +147,62 @@ demo: check-deps-test
 	./$(B)/certbox examples/robot.scene
 
 TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project
-test: $(TESTS:%=$(B)/test_%) $(B)/test_tight_nofma $(B)/certbox
-	./$(B)/test_badinput
-	./$(B)/test_special
-	./$(B)/test_exact 1000000 1
-	./$(B)/test_cbox 300000 1
-	./$(B)/test_sphere 200000 1
-	./$(B)/test_alias 100000 1
-	./$(B)/test_halfspace 150 1
-	./$(B)/test_imat 200000 50000 1
-	./$(B)/test_chain 1000 20 1
-	./$(B)/test_batch 200 1
-	./$(B)/test_tight 150 1
-	./$(B)/test_tight_nofma 150 1
-	./$(B)/test_eft 1000 1
-	./$(B)/test_classes 200000 1
-	./$(B)/test_float 200000 1
-	./$(B)/test_plane 200000 1
-	./$(B)/test_project 20000 1
-	./$(B)/test_ieee
-	./$(B)/test_scene examples/*.scene
+# Each suite with its arguments: one target per run (run-NAME, san-NAME), so
+# that make -j2 (make check) spreads the runs over both cores; -Otarget
+# keeps each run's output together.  The sanitizer runs take fewer random
+# cases (ASan/UBSan are ~3x slower).
+A_badinput     :=
+A_special      :=
+A_exact        := 1000000 1
+A_cbox         := 300000 1
+A_sphere       := 200000 1
+A_alias        := 100000 1
+A_halfspace    := 150 1
+A_imat         := 200000 50000 1
+A_chain        := 1000 20 1
+A_batch        := 200 1
+A_tight        := 150 1
+A_tight_nofma  := 150 1
+A_eft          := 1000 1
+A_classes      := 200000 1
+A_float        := 200000 1
+A_plane        := 200000 1
+A_project      := 20000 1
+A_ieee         :=
+A_scene        := examples/*.scene
+A_gltf         := $(GLTFDIR) tests/data/gltf $(B)/certbox
+SA_badinput    :=
+SA_special     :=
+SA_exact       := 200000 2
+SA_cbox        := 100000 2
+SA_sphere      := 30000 2
+SA_alias       := 20000 2
+SA_halfspace   := 30 2
+SA_imat        := 40000 10000 2
+SA_chain       := 1000 10 2
+SA_batch       := 200 2
+SA_tight       := 50 2
+SA_eft         := 200 2
+SA_classes     := 50000 2
+SA_float       := 50000 2
+SA_plane       := 40000 2
+SA_project     := 4000 2
+SA_ieee        :=
+SA_scene       := examples/*.scene
+SA_gltf        := $(GLTFDIR) tests/data/gltf $(B)/certbox
+RUNS     := $(TESTS) tight_nofma
+RUNS_SAN := $(filter-out tight_nofma,$(TESTS))
+.PHONY: $(RUNS:%=run-%) $(RUNS_SAN:%=san-%) run-tool
+test: $(RUNS:%=run-%) run-tool
+test-san: $(RUNS_SAN:%=san-%)
+$(RUNS:%=run-%): run-%: $(B)/test_% $(B)/certbox
+	./$(B)/test_$* $(A_$*)
+$(RUNS_SAN:%=san-%): san-%: $(B)/san/test_% $(B)/certbox
+	./$(B)/san/test_$* $(SA_$*)
+# the scene tool on every example, and its refusal of a file that is not one
+run-tool: $(B)/certbox
 	for f in examples/*.scene; do ./$(B)/certbox $$f > /dev/null || exit 1; done
 	! ./$(B)/certbox examples/scene-format.md > /dev/null 2>&1
-	./$(B)/test_gltf $(GLTFDIR) tests/data/gltf $(B)/certbox
-
-# Sanitizers: same tests, fewer random cases (ASan/UBSan are ~3x slower).
-test-san: $(TESTS:%=$(B)/san/test_%) $(B)/certbox
-	./$(B)/san/test_badinput
-	./$(B)/san/test_exact 200000 2
-	./$(B)/san/test_cbox 100000 2
-	./$(B)/san/test_sphere 30000 2
-	./$(B)/san/test_special
-	./$(B)/san/test_alias 20000 2
-	./$(B)/san/test_halfspace 30 2
-	./$(B)/san/test_imat 40000 10000 2
-	./$(B)/san/test_chain 1000 10 2
-	./$(B)/san/test_batch 200 2
-	./$(B)/san/test_tight 50 2
-	./$(B)/san/test_eft 200 2
-	./$(B)/san/test_classes 50000 2
-	./$(B)/san/test_float 50000 2
-	./$(B)/san/test_plane 40000 2
-	./$(B)/san/test_project 4000 2
-	./$(B)/san/test_ieee
-	./$(B)/san/test_scene examples/*.scene
-	./$(B)/san/test_gltf $(GLTFDIR) tests/data/gltf $(B)/certbox
 
 # Cortex-M4F and Cortex-M7, freestanding (arm-none-eabi-gcc): no libc beyond
 # sqrt, code size and worst-case stack per function (build/embedded/report.md).
@@ -295,7 +306,7 @@ check: check-deps
 	@sh scripts/clean_tree.sh save $(B)/clean-tree.before
 	$(TIMED) build $(MAKE) -j2 all $(B)/demo $(TESTS:%=$(B)/test_%) $(TESTS:%=$(B)/san/test_%) $(B)/bench
 	$(TIMED) header-check $(MAKE) header-check
-	$(TIMED) test+test-san $(MAKE) -j2 test test-san
+	$(TIMED) test+test-san $(MAKE) -j2 -Otarget test test-san
 	$(TIMED) ieee-check+bench-smoke+install-check+embedded+branchfree $(MAKE) -j2 ieee-check bench-smoke install-check embedded branchfree
 	$(TIMED) fuzz-check+check-cross $(MAKE) -j2 fuzz-check check-cross
 	$(TIMED) proof-check $(MAKE) proof-check
