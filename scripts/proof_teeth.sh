@@ -27,7 +27,9 @@ case_() {
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
   fam=64; case $tu in *_f.c) fam=32;; esac
-  (cd "$d" && frama-c $(teeth_incs "$d") "$tu" \
+  # DEFS: the lemma groups of the function's proof job (proofs/job.sh), so
+  # that a goal fails for the weakened body, not for a missing lemma
+  (cd "$d" && frama-c $(teeth_incs "$d") ${DEFS:-} "$tu" \
      -wp -wp-rte $split -wp-prover "cvc4r$fam" -wp-timeout 10 -wp-par 1 \
      -wp-cache none -wp-fct "$fct" ${props:+-wp-prop "$props"} > "$d/wp.log" 2>&1) || true
   # unproved: "[wp] [Failed] Goal G" (several provers) or "[wp] [PROVER] Goal G : Timeout" (one)
@@ -62,6 +64,7 @@ case_ imat-hi-not-widened src/f64/cbx_ikernel.h cbx_irow proofs/imat.c sound sou
   "    r.hi = cbx_add_rn(shi, CBX_C(0.0));" &
 # 6. motion: a full axis's lower end at most -1 (sound: below both ends'
 #    lower ends, but loose wherever the exact end is above -1)
+DEFS=-cpp-extra-args=-DCBX_MOTION_LEMMAS   # job B64a
 case_ motion-lo-loose src/f64/cbx_motion.c mot_axis_union proofs/all.c tight tight \
   "        r.lo = cbx_min2(r0, r1);" \
   "        r.lo = cbx_min2(cbx_min2(r0, r1), -1.0);" - &
@@ -71,11 +74,14 @@ case_ motion-lo-loose src/f64/cbx_motion.c mot_axis_union proofs/all.c tight tig
 case_ motion-full-whole src/f64/cbx_motion.c mot_axis_union proofs/all.c sound sound \
   "        r.lo = cbx_min2(r0, r1);" \
   "        r.lo = cbx_ninf();" - &
+DEFS=
 # 8. the sphere: the radius doubled (still contains the ball; the
 #    tightness postcondition, ball_tight, must fail)
+DEFS=-cpp-extra-args=-DCBX_BALL_LEMMAS     # jobs BS64, BS32
 case_ sphere-radius-doubled src/algo/cbx_sphere.c ball_axis_bounds proofs/all.c lh,rn,g,ta,tb,tight 'tight\|_ta\|_tb\|_g' \
   "    conv_res lh = cbx_c2b(t, r);" \
   "    conv_res lh = cbx_c2b(t, cbx_add_rn(r, r));" - &
+DEFS=
 # 9. the 2D box: CBX_OK whatever the rows (a lost axis must not read OK:
 #    the status postcondition ok_iff must fail)
 case_ plane-status-ok src/algo/cbx_interval.c cbx_transform_box2 proofs/all.c same_in,same_out,ok_iff ok_iff \
