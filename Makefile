@@ -149,47 +149,33 @@ demo: check-deps-test
 TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project
 # Each suite with its arguments: one target per run (run-NAME, san-NAME), so
 # that make -j2 (make check) spreads the runs over both cores; -Otarget
-# keeps each run's output together.  The sanitizer runs take fewer random
-# cases (ASan/UBSan are ~3x slower).
-A_badinput     :=
-A_special      :=
-A_exact        := 1000000 1
-A_cbox         := 300000 1
-A_sphere       := 200000 1
-A_alias        := 100000 1
-A_halfspace    := 150 1
-A_imat         := 200000 50000 1
-A_chain        := 1000 20 1
-A_batch        := 200 1
-A_tight        := 150 1
-A_tight_nofma  := 150 1
-A_eft          := 1000 1
-A_classes      := 200000 1
-A_float        := 200000 1
-A_plane        := 200000 1
-A_project      := 20000 1
-A_ieee         :=
-A_scene        := examples/*.scene
-A_gltf         := $(GLTFDIR) tests/data/gltf $(B)/certbox
-SA_badinput    :=
-SA_special     :=
-SA_exact       := 200000 2
-SA_cbox        := 100000 2
-SA_sphere      := 30000 2
-SA_alias       := 20000 2
-SA_halfspace   := 30 2
-SA_imat        := 40000 10000 2
-SA_chain       := 1000 10 2
-SA_batch       := 200 2
-SA_tight       := 50 2
-SA_eft         := 200 2
-SA_classes     := 50000 2
-SA_float       := 50000 2
-SA_plane       := 40000 2
-SA_project     := 4000 2
-SA_ieee        :=
-SA_scene       := examples/*.scene
-SA_gltf        := $(GLTFDIR) tests/data/gltf $(B)/certbox
+# keeps each run's output together.  One line per suite: its name, its
+# arguments, and its arguments under the sanitizers (fewer random cases:
+# ASan/UBSan are ~3x slower).
+define suite
+A_$(1)  := $(2)
+SA_$(1) := $(3)
+endef
+$(eval $(call suite,badinput,,))
+$(eval $(call suite,special,,))
+$(eval $(call suite,exact,1000000 1,200000 2))
+$(eval $(call suite,cbox,300000 1,100000 2))
+$(eval $(call suite,sphere,200000 1,30000 2))
+$(eval $(call suite,alias,100000 1,20000 2))
+$(eval $(call suite,halfspace,150 1,30 2))
+$(eval $(call suite,imat,200000 50000 1,40000 10000 2))
+$(eval $(call suite,chain,1000 20 1,1000 10 2))
+$(eval $(call suite,batch,200 1,200 2))
+$(eval $(call suite,tight,150 1,50 2))
+$(eval $(call suite,tight_nofma,150 1,))
+$(eval $(call suite,eft,1000 1,200 2))
+$(eval $(call suite,classes,200000 1,50000 2))
+$(eval $(call suite,float,200000 1,50000 2))
+$(eval $(call suite,plane,200000 1,40000 2))
+$(eval $(call suite,project,20000 1,4000 2))
+$(eval $(call suite,ieee,,))
+$(eval $(call suite,scene,examples/*.scene,examples/*.scene))
+$(eval $(call suite,gltf,$(GLTFDIR) tests/data/gltf $(B)/certbox,$(GLTFDIR) tests/data/gltf $(B)/certbox))
 RUNS     := $(TESTS) tight_nofma
 RUNS_SAN := $(filter-out tight_nofma,$(TESTS))
 .PHONY: $(RUNS:%=run-%) $(RUNS_SAN:%=san-%) run-tool
