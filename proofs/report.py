@@ -163,7 +163,7 @@ def main():
            + ('was proved, but **from a kept WP cache** (`make proof` during development: '
               'unchanged goals are read back from earlier runs); `make proof-check` proves every goal from scratch. '
               if cached else
-              'was proved by the provers in this run: each job\'s WP cache starts empty and is deleted after it. ')
+              'was proved by the provers in this run: no job keeps a WP cache (`-wp-cache none`). ')
            + 'Smoke tests in jobs of their own '
            '(`-wp-smoke-tests`, CVC4 with a step budget).\n']
     for fam in ('64', '32'):

@@ -6,8 +6,8 @@
 #   sh proofs/run.sh --check  same, and exit 1 unless every goal is proved
 #                             and the smoke tests find no inconsistent contract
 # Model: WP's default (Typed memory, IEEE float), -wp-rte; provers: see
-# proofs/README.md.  Nothing is carried over: each job's WP cache
-# starts empty and is deleted after it, so the provers prove every goal each run.
+# proofs/README.md.  Nothing is carried over: without CBX_WP_KEEP_CACHE the
+# jobs keep no WP cache, so the provers prove every goal each run.
 #
 # The work is a list of independent jobs (proofs/job.sh: lemmas, kernels,
 # the rest and the smoke tests, per family), run CBX_JOBS at a time (the

@@ -207,7 +207,7 @@ def proof(raw):
               'unproved': data['failed'], 'errors': data['errors'], 'unfinished': data['unfinished'],
               'result': 'PROVED' if data['ok'] else 'NOT PROVED',
               'inputs_sha256': digest,
-              'model': 'Frama-C/WP default float model (IEEE, round to nearest), Typed memory, -wp-rte, every goal proved by a prover in this run (each job\'s WP cache starts empty and is deleted after it)'}
+              'model': 'Frama-C/WP default float model (IEEE, round to nearest), Typed memory, -wp-rte, every goal proved by a prover in this run (no job keeps a WP cache)'}
     volatile = {'provers': {}, 'wall_seconds_per_job': data['job_time']}
     for fam, per in data['per'].items():
         stable['families'][fam] = {f: {'proved': v['ok'], 'total': v['n']} for f, v in sorted(per.items())}
