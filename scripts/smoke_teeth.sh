@@ -8,7 +8,7 @@
 set -u
 . scripts/teeth_copy.sh
 teeth_setup smoke-teeth
-STEPS=${CBX_SMOKE_STEPS:-80000}
+STEPS=${CBX_SMOKE_STEPS:-60000}
 # the smoke options of proofs/job.sh (dead-call tests off: see there)
 export CBX_SMOKE_OPTS="${CBX_SMOKE_OPTS:--wp-no-smoke-dead-call}"
 NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@invariant,-@variant,-@breaks,-@continues,-@returns,-@complete_behaviors,-@disjoint_behaviors,-@terminates,-@decreases,-@check"
