@@ -51,7 +51,7 @@ SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
-LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c src/algo/cbx_project.c \
+LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c src/f64/cbx_chain.c src/algo/cbx_project.c \
            src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c src/f32/cbx_project_f.c \
            src/core/cbx_ieee.c src/f32/cbx_ieee_f.c
 HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_quot.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h specs/cbx_plane.h specs/cbx_proj_logic.h specs/cbx_proj.h

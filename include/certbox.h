@@ -156,6 +156,7 @@ typedef enum cbx_class {
 #if !defined(__FRAMAC__) || !defined(CBX_FRAMAC_ONLY_32)
 #ifdef __FRAMAC__
 #include "cbx_class.h"
+#include "cbx_chain.h"
 #endif
 
 
@@ -331,6 +332,38 @@ cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box 
     disjoint behaviors;
 */
 cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out);
+
+/* ---- chains of maps: a node's transforms, applied level by level --------
+ * cbx_transform_box_chain: the box of *in under p[0] p[1] ... p[n-1]
+ * (p[n-1] applied first, p[0] last: a scene node's list of transforms, or
+ * a path from a leaf up to the root), one map at a time with
+ * cbx_transform_box_as with the class cbx_prepare recorded (the same box as
+ * cbx_transform_box_prep), each step's box the next step's input.  Proven:
+ * the image of every real point of *in under the exact product of the
+ * given double matrices lies in *out (specs/cbx_chain.h: chain_x, an
+ * infinite end no constraint), whatever the maps, the box and the statuses
+ * of the steps.  Each step has cbx_transform_box's promise, tightness
+ * included, against the step's input box; the chain's box is the last
+ * step's, which can be wider than the box of the exact product (a rotation
+ * by 45 degrees and back widens a box; cbx_imat_compose composes first).
+ * Status: CBX_EINVAL with the whole space when n == 0; else the most
+ * severe status of the steps (CBX_EINVAL, then CBX_ERANGE, then CBX_EMPTY,
+ * then CBX_OK; checked by tests/test_chain.c).  The step is
+ * cbx_transform_box_as with p[k]'s class, so a p[k] changed by hand still
+ * gives a sound box.  out may be in; otherwise *out may not overlap *in,
+ * and it may not overlap p[0 .. n-1]. */
+/*@ requires valid: \valid_read(p + (0 .. n - 1)) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, p + (0 .. n - 1)) && (\separated(out, in) || out == in);
+    assigns *out;
+    ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE
+                || \result == CBX_EINVAL;
+    ensures none: n == 0 ==> (\result == CBX_EINVAL && whole_space(out));
+    ensures contain: \forall real x0, x1, x2;
+      pt_in(x0, x1, x2, CBX_BV(in, Pre)) ==>
+      chain_in{Pre}(p, 0, n, x0, x1, x2, out->lo[0], out->hi[0], out->lo[1], out->hi[1],
+                    out->lo[2], out->hi[2]);
+*/
+cbx_status cbx_transform_box_chain(const cbx_prepared *p, size_t n, const cbx_box *in, cbx_box *out);
 
 #endif /* binary64 only */
 

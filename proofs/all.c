@@ -12,3 +12,4 @@
 #include "cbx_tight.c"
 #include "cbx_class.c"
 #include "cbx_motion.c"
+#include "cbx_chain.c"

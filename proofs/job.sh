@@ -9,8 +9,10 @@
 #   K64, K32  the rounding primitives and kernels (src/core/*.h,
 #             src/algo/*.h), without -wp-split (measured: half the goals
 #             and half the prover calls of the split run)
-#   B64a      binary64-only code (src/f64/*.c: tight mode, classes, motion),
-#             with the motion lemmas of specs/cbx_class.h (CBX_MOTION_LEMMAS)
+#   B64a      binary64-only code (src/f64/*.c: tight mode, classes, motion,
+#             chains), with the motion lemmas of specs/cbx_class.h
+#             (CBX_MOTION_LEMMAS) and the chain lemmas of specs/cbx_chain.h
+#             (CBX_CHAIN_LEMMAS)
 #   B64b, B32 the rest: the algorithms of src/algo/*.c (public functions,
 #             domain checks), without -wp-split (splitting the behaviors'
 #             postconditions multiplies goals)
@@ -83,7 +85,7 @@ case $name in
   A32) TU=proofs/all_f.c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU split)" ;;
   K64) TU=proofs/all.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU kernels)" ;;
   K32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU kernels)" ;;
-  B64a) TU=proofs/all.c; OPTS="$WP -cpp-extra-args=-DCBX_MOTION_LEMMAS"; SEL="-wp-fct $(fcts $TU f64)" ;;
+  B64a) TU=proofs/all.c; OPTS="$WP -cpp-extra-args=-DCBX_MOTION_LEMMAS -cpp-extra-args=-DCBX_CHAIN_LEMMAS"; SEL="-wp-fct $(fcts $TU f64)" ;;
   B64b) TU=proofs/all.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split),$(fcts $TU f64),$(fcts $TU ball),$(fcts $TU ballsplit)" ;;
   B32) TU=proofs/all_f.c; OPTS=$WP; SEL="-wp-skip-fct $(fcts $TU kernels),$(fcts $TU split),$(fcts $TU ball),$(fcts $TU ballsplit)" ;;
   S64) TU=proofs/all.c; OPTS="$SMOKE $NOGOALS"; SEL="" ;;

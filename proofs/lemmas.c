@@ -6,6 +6,7 @@
 #define CBX_IMAT_LEMMAS 1
 #define CBX_BALL_LEMMAS 1
 #define CBX_MOTION_LEMMAS 1
+#define CBX_CHAIN_LEMMAS 1
 #define CBX_PROJ_LEMMAS 1
 #include "certbox.h"
 

@@ -162,8 +162,8 @@ cp -p "$ROOT/Makefile" "$BASE/Makefile"
 cp -p "$ROOT/README.md" "$BASE/README.md"
 rm -rf "$BASE/build"
 
-TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_eft test_float test_classes test_plane test_project"
-BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_eft build/test_float build/test_classes build/test_plane build/test_project"
+TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_eft test_float test_classes test_plane test_project test_chain"
+BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_eft build/test_float build/test_classes build/test_plane build/test_project build/test_chain"
 # the scene tool's glTF reader (tools/certbox/gltf.c): test_gltf, which also runs
 # the tool; only with jansson (the Makefile's optional dependency)
 GLTF=0
@@ -190,6 +190,7 @@ args_of() {
     test_classes) echo "${MUT_CLASSES_N:-20000} $SEED" ;;
     test_plane) echo "${MUT_PLANE_N:-20000} $SEED" ;;
     test_project) echo "${MUT_PROJECT_N:-5000} $SEED" ;;
+    test_chain) echo "${MUT_CHAIN_STEPS:-200} 5 $SEED" ;;
     test_gltf) echo "/usr/share/assimp/models/glTF2 tests/data/gltf build/certbox ${MUT_GLTF_N:-20000}" ;;
     esac
 }

@@ -93,6 +93,11 @@ case_ plane-status-ok src/algo/cbx_interval.c cbx_transform_box2 proofs/all.c sa
 case_ project-lo-rounded-to-nearest src/algo/cbx_project.c proj_corner proofs/proj.c pos call_corner_lo_requires_pos \
   "            cbx_fp lo = cbx_div_dn(xe.lo, bl);" \
   "            cbx_fp lo = cbx_div_rn(xe.lo, bl);" - &
+# 11. the chain of maps: the last map (p[0]) never applied (the box of a
+#    shorter chain: the containment postcondition must fail)
+case_ chain-last-map-skipped src/f64/cbx_chain.c cbx_transform_box_chain proofs/all.c contain ensures_contain \
+  "    while (k > 0U) {" \
+  "    while (k > 1U) {" &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

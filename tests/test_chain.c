@@ -40,6 +40,16 @@
  *              are the sharp ones: later the boxes are so much wider than
  *              the exact image (the wrapping effect, below) that this check
  *              only confirms soundness, it could no longer see a wrong P.
+ *   chain-fn   at every checkpoint, cbx_transform_box_chain on the maps so
+ *              far (last applied first) and B_0: the same box as the box
+ *              chain's B_k, bit for bit, the status the most severe of the
+ *              steps', and the 8 corners of B_0 mapped by the exact
+ *              composition inside it (its proven promise, checked exactly);
+ *   chain-spec its special cases: no map (CBX_EINVAL, whole space), a NaN
+ *              in the box or in one map of the chain (CBX_EINVAL, whole
+ *              space), an empty box (CBX_EMPTY, lo +inf, hi -inf), two
+ *              scalings by 2^1000 and one more map (CBX_ERANGE, the whole
+ *              space), the result written in place (out == in).
  * Growth, reported per axis as max / median over the chains: the final box
  * width of the box chain divided by the width 2h of the cbox chain, and
  * divided by the width of the exact bound of P(B_0) (the naive exact
@@ -72,9 +82,11 @@ static int early_checkpoint(long s)
 }
 #define MAX_FAIL_LOGS 20
 
-enum { K_START, K_BOX, K_CBOX, K_BOXC, K_CBOXC, NK };
-static const char *const k_name[NK] = { "start", "box-step", "cbox-step", "box-comp", "cbox-comp" };
-static const char *const k_unit[NK] = { "chains", "steps", "steps", "checkpts", "checkpts" };
+enum { K_START, K_BOX, K_CBOX, K_BOXC, K_CBOXC, K_CHAIN, K_CHSPEC, NK };
+static const char *const k_name[NK] = { "start", "box-step", "cbox-step", "box-comp", "cbox-comp",
+                                        "chain-fn", "chain-spec" };
+static const char *const k_unit[NK] = { "chains", "steps", "steps", "checkpts", "checkpts",
+                                        "checkpts", "cases" };
 static long k_checked[NK], k_failed[NK];
 static long logs;
 
@@ -363,6 +375,73 @@ static int cbox_step(ctx *k, const cbx_affine *a, const cbx_cbox *in, cbx_cbox *
 
 /* a / b for the statistics; +inf where a width is infinite (a chain that
  * left the domain), so that no NaN reaches the sort */
+/* Severity order of the statuses (the chain's status is the worst). */
+static int sev_of(cbx_status s)
+{
+    return s == CBX_EINVAL ? 3 : s == CBX_ERANGE ? 2 : s == CBX_EMPTY ? 1 : 0;
+}
+
+static int is_whole(const cbx_box *b)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(isinf(b->lo[i]) && b->lo[i] < 0 && isinf(b->hi[i]) && b->hi[i] > 0)) return 0;
+    return 1;
+}
+
+/* cbx_transform_box_chain's special cases; returns the number failed. */
+static int chain_special(xu_rng *r)
+{
+    cbx_prepared pr[3];
+    cbx_affine a;
+    cbx_box b = { { -1, -2, -3 }, { 1, 2, 3 } }, o, e = b, ref;
+    cbx_status st;
+    int i, bad = 0;
+    for (i = 0; i < 3; i++) {
+        random_step(r, &a);
+        cbx_prepare(&a, &pr[i]);
+    }
+    k_checked[K_CHSPEC]++;                       /* no map */
+    if (cbx_transform_box_chain(pr, 0, &b, &o) != CBX_EINVAL || !is_whole(&o)) {
+        report(K_CHSPEC, -1, 0, "n = 0 is not CBX_EINVAL with the whole space"); bad++;
+    }
+    k_checked[K_CHSPEC]++;                       /* NaN in the box */
+    e.lo[1] = NAN;
+    if (cbx_transform_box_chain(pr, 3, &e, &o) != CBX_EINVAL || !is_whole(&o)) {
+        report(K_CHSPEC, -1, 0, "a NaN box is not CBX_EINVAL with the whole space"); bad++;
+    }
+    k_checked[K_CHSPEC]++;                       /* empty box */
+    e = b; e.lo[2] = 4;
+    st = cbx_transform_box_chain(pr, 3, &e, &o);
+    if (st != CBX_EMPTY || !(o.lo[0] == INFINITY && o.hi[0] == -INFINITY)) {
+        report(K_CHSPEC, -1, 0, "an empty box is not CBX_EMPTY with the empty box"); bad++;
+    }
+    k_checked[K_CHSPEC]++;                       /* NaN in the middle map */
+    a = pr[1].a; a.m[1][2] = NAN;
+    cbx_prepare(&a, &pr[1]);
+    if (cbx_transform_box_chain(pr, 3, &b, &o) != CBX_EINVAL || !is_whole(&o)) {
+        report(K_CHSPEC, -1, 0, "a NaN map is not CBX_EINVAL with the whole space"); bad++;
+    }
+    k_checked[K_CHSPEC]++;                       /* out of range, then one more map */
+    memset(&a, 0, sizeof a);
+    a.m[0][0] = a.m[1][1] = a.m[2][2] = 0x1p1000;
+    cbx_prepare(&a, &pr[2]);
+    cbx_prepare(&a, &pr[1]);
+    st = cbx_transform_box_chain(pr, 3, &b, &o);
+    if (st != CBX_ERANGE || !is_whole(&o)) {
+        report(K_CHSPEC, -1, 0, "a chain out of range is not CBX_ERANGE with the whole space"); bad++;
+    }
+    k_checked[K_CHSPEC]++;                       /* in place, the same as apart */
+    random_step(r, &a);
+    cbx_prepare(&a, &pr[1]);
+    st = cbx_transform_box_chain(pr, 3, &b, &ref);
+    o = b;
+    if (cbx_transform_box_chain(pr, 3, &o, &o) != st || memcmp(&o, &ref, sizeof o) != 0) {
+        report(K_CHSPEC, -1, 0, "in place (out == in) differs from out apart"); bad++;
+    }
+    return bad;
+}
+
 static double ratio(double a, double b)
 {
     double r = a / b;
@@ -418,6 +497,7 @@ int main(int argc, char **argv)
     ctx k;
     xu_rng rng;
     clock_t t0 = clock();
+    cbx_prepared *pr, *rev;
 
     if (argc > 4 || steps > 100000000L || chains > 1000000) usage(argv);
     for (i = 0; i < 4; i++) {
@@ -434,6 +514,9 @@ int main(int argc, char **argv)
     for (i = 0; i < 4; i++)
         if (!r_bc[i] || !r_be[i] || !r_ce[i]) return 2;
     if (!r_step || !cp_be) return 2;
+    pr = malloc((size_t)steps * sizeof *pr);
+    rev = malloc((size_t)steps * sizeof *rev);
+    if (!pr || !rev) return 2;
 
     ctx_init(&k);
     rng.s = seed;
@@ -450,6 +533,7 @@ int main(int argc, char **argv)
         int bad_chain = 0;
         double wb[3], wc[3], we[3];
         int start_ok;
+        cbx_status worst = CBX_OK;
 
         cp = 0;
         random_box(&rng, ch, &b0);
@@ -490,6 +574,8 @@ int main(int argc, char **argv)
                 bad_chain = 1;
             }
             if (v.got != CBX_OK && left_box < 0) left_box = s + 1;
+            if (sev_of(v.got) > sev_of(worst)) worst = v.got;
+            cbx_prepare(&a, &pr[s]);
             b = bn;
             /* cbox chain */
             total++;
@@ -522,6 +608,23 @@ int main(int argc, char **argv)
                                                " is outside [c - h, c + h]");
                     failed++;
                     bad_chain = 1;
+                }
+                /* the chain function on the maps so far, last applied first */
+                {
+                    cbx_box w;
+                    cbx_status ws;
+                    long j;
+                    for (j = 0; j <= s; j++) rev[j] = pr[s - j];
+                    ws = cbx_transform_box_chain(rev, (size_t)s + 1, &b0, &w);
+                    total++;
+                    k_checked[K_CHAIN]++;
+                    if (ws != worst || memcmp(&w, &b, sizeof w) != 0 || composed_box_failures(&k, &w)) {
+                        report(K_CHAIN, ch, s + 1, ws != worst ? "status is not the worst of the steps'"
+                               : memcmp(&w, &b, sizeof w) != 0 ? "box differs from the box chain's"
+                               : "a corner of B_0 mapped by the exact composition is outside it");
+                        failed++;
+                        bad_chain = 1;
+                    }
                 }
                 for (i = 0; i < 3; i++)
                     cp_be[((size_t)cp * (size_t)chains + (size_t)ch) * 3 + (size_t)i] =
@@ -577,6 +680,11 @@ int main(int argc, char **argv)
     }
     printf("exact composition (mpq_t, all %ld steps): %.2f s in all, largest numerator or"
            " denominator %zu bits\n", steps, comp_sec, bits_max);
+    {
+        int sb = chain_special(&rng);
+        total += 6;
+        failed += sb;
+    }
     printf("checks:\n");
     for (i = 0; i < NK; i++)
         printf("  check %-10s %8ld %-8s checked, %ld failed\n", k_name[i], k_checked[i], k_unit[i],
@@ -592,6 +700,8 @@ int main(int argc, char **argv)
     free(r_step);
     free(cp_be);
     free(cp_at);
+    free(pr);
+    free(rev);
     printf("%ld passed, %ld failed\n", total - failed, failed);
     return failed ? 1 : 0;
 }

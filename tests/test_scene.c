@@ -449,7 +449,7 @@ static void ref_eval(const scene *s, cbx_box *out)
                 b = o;
             } else {
                 for (int q = N->first + N->n - 1; q >= N->first; q--)
-                    (void)cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, &b, &b);
+                    (void)cbx_transform_box_as(&s->ops[q].a, (cbx_class)s->ops[q].cls, &b, &b);
             }
         }
         out[k] = b;

@@ -5,10 +5,12 @@
  * Soundness: no matrix is ever multiplied in round-to-nearest floating
  * point.  A leaf's bound in its node's coordinates comes from a proven
  * function (cbx_ellipsoid_box for spheres and ellipsoids: exact
- * dual-quadric bound, outward rounded; a box is itself), then every
- * operation of the node, last first, maps the current box with
- * cbx_transform_box_as and the class computed at load time (or
- * cbx_motion_box for a motion node), then the parent's, up to the root, or
+ * dual-quadric bound, outward rounded; a box is itself), then the node's
+ * operations, last first, map the current box by one call of
+ * cbx_transform_box_chain (proven: the image of every point of the box
+ * under the exact product of the node's matrices lies in the result; each
+ * step is cbx_transform_box_as with the class computed at load time), or
+ * cbx_motion_box for a motion node, then the parent's, up to the root, or
  * for a leaf deeper than SC_WALK steps, up to where interval maps composed
  * with outward rounding take over (see "deep leaves" below).  Each step
  * contains the exact image of the previous box, so the world box contains
@@ -227,8 +229,7 @@ static int add_op(parser *p, const cbx_affine *a)
         return fail(p, "more than %d operations", SC_COUNT_MAX);
     if (grow((void **)&s->ops, &s->capo, s->no + 1, sizeof *s->ops) != 0)
         return fail(p, "out of memory");
-    s->ops[s->no].a = *a;
-    s->ops[s->no].cls = cbx_classify(a);
+    cbx_prepare(a, &s->ops[s->no]);
     s->no++;
     s->nodes[p->cur].n++;
     if (p->side) p->n1++; else p->n0++;
@@ -736,9 +737,10 @@ static cbx_status node_box(const scene *s, const sc_node *N, cbx_box *b)
         cbx_box o;
         worse(&st, cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, b, &o));
         *b = o;
-    } else {
-        for (int q = N->first + N->n - 1; q >= N->first; q--)
-            worse(&st, cbx_transform_box_as(&s->ops[q].a, s->ops[q].cls, b, b));
+    } else if (N->n > 0) {
+        /* the node's operations, last first: proven as a whole (the box
+         * holds the image of every point of *b under their exact product) */
+        worse(&st, cbx_transform_box_chain(&s->ops[N->first], (size_t)N->n, b, b));
     }
     return st;
 }

@@ -18,8 +18,10 @@
 
 enum sc_kind { SC_BOX = 0, SC_SPHERE = 1, SC_ELLIPSOID = 2 };
 
-/* One operation: its given double map and its class (computed at load). */
-typedef struct sc_op { cbx_affine a; cbx_class cls; } sc_op;
+/* One operation: its given double map, prepared at load (cbx_prepare: its
+ * class and fast-range flag), so that a node's operations are the array
+ * cbx_transform_box_chain takes. */
+typedef cbx_prepared sc_op;
 
 /* A node: parent (-1 for a root), its operations ops[first .. first+n-1]
  * in file order (O1 .. On: p_parent = O1(O2(...On(p)))); a motion node
