@@ -5,12 +5,13 @@
  * Soundness: no matrix is ever multiplied in round-to-nearest floating
  * point.  A leaf's bound in its node's coordinates comes from a proven
  * function (cbx_ellipsoid_box for spheres and ellipsoids: exact
- * dual-quadric bound, outward rounded; a box is itself), then the node's
- * operations, last first, map the current box by one call of
+ * dual-quadric bound, outward rounded; a box is itself), then the
+ * operations of the node and of its static ancestors up to the next motion
+ * node, last first, map the current box by one call of
  * cbx_transform_box_chain (proven: the image of every point of the box
- * under the exact product of the node's matrices lies in the result; each
- * step is cbx_transform_box_as with the class computed at load time), or
- * cbx_motion_box for a motion node, then the parent's, up to the root, or
+ * under the exact product of those matrices lies in the result; each step
+ * is cbx_transform_box_as with the class computed at load time), a motion
+ * node by cbx_motion_box, and so on up to the root, or
  * for a leaf deeper than SC_WALK steps, up to where interval maps composed
  * with outward rounding take over (see "deep leaves" below).  Each step
  * contains the exact image of the previous box, so the world box contains
@@ -745,6 +746,25 @@ static cbx_status node_box(const scene *s, const sc_node *N, cbx_box *b)
     return st;
 }
 
+/* A run of static nodes met on a leaf's way up (path[0] the leaf's side,
+ * path[np - 1] the root's), at most SC_WALK operations in all: their
+ * operations in one array, the root's side first (applied last), so that
+ * one call of cbx_transform_box_chain maps the box through the whole run
+ * (the same steps, in the same order, as node_box node by node). */
+typedef struct sc_run { int path[SC_WALK]; int np, nops; sc_op buf[SC_WALK]; } sc_run;
+
+static cbx_status run_flush(const scene *s, sc_run *r, cbx_box *b)
+{
+    size_t m = 0;
+    for (int q = r->np - 1; q >= 0; q--) {
+        const sc_node *N = &s->nodes[r->path[q]];
+        for (int o = 0; o < N->n; o++)
+            r->buf[m++] = s->ops[N->first + o];
+    }
+    r->np = r->nops = 0;
+    return m > 0 ? cbx_transform_box_chain(r->buf, m, b, b) : CBX_OK;
+}
+
 void scene_eval(scene *s)
 {
     s->st = CBX_OK;
@@ -772,11 +792,24 @@ void scene_eval(scene *s)
         cbx_box b;
         cbx_status st = leaf_box(L, &b);
         int n = L->node, budget = SC_WALK;
+        sc_run run;
+        run.np = run.nops = 0;
+        /* static nodes gathered into runs, each one proven chain; a motion
+         * node (or a run that would pass SC_WALK operations, which only a
+         * walk without the maps meets) goes on its own */
         while (n >= 0 && (!have_maps || walk_cost(&s->nodes[n]) <= budget)) {
-            budget -= walk_cost(&s->nodes[n]);
-            worse(&st, node_box(s, &s->nodes[n], &b));
-            n = s->nodes[n].parent;
+            const sc_node *N = &s->nodes[n];
+            budget -= walk_cost(N);
+            if (!N->motion && run.np < SC_WALK && run.nops + N->n <= SC_WALK) {
+                run.path[run.np++] = n;
+                run.nops += N->n;
+            } else {
+                worse(&st, run_flush(s, &run, &b));
+                worse(&st, node_box(s, N, &b));
+            }
+            n = N->parent;
         }
+        worse(&st, run_flush(s, &run, &b));
         /* then by segments, motion nodes by cbx_motion_box (at most SC_WALK) */
         for (int motions = 0; n >= 0; ) {
             const sc_node *N = &s->nodes[n];
