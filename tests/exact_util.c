@@ -95,6 +95,11 @@ int xu_is_empty(const cbx_box *in)
 /* ldexp(1, k) for 0 <= k <= 1018 is an exact power of two, and comparing
  * fabs(v) (exact) with it is an exact comparison; an infinity is never
  * <= a finite bound, so non-finite inputs fall out by themselves. */
+int xu_severity(cbx_status s)
+{
+    return s == CBX_EINVAL ? 3 : s == CBX_ERANGE ? 2 : s == CBX_EMPTY ? 1 : 0;
+}
+
 int xu_pair_in_domain(double m, double c)
 {
     int n;

@@ -95,6 +95,7 @@ int xu_has_nan(const cbx_affine *a, const cbx_box *in);
 /* Some axis has no real point: hi < lo, lo = +inf or hi = -inf (the
  * empty rule of cbx_transform_box and cbx_box_to_cbox). */
 int xu_is_empty(const cbx_box *in);
+int xu_severity(cbx_status s);   /* the order of "the most severe status": OK 0, EMPTY 1, ERANGE 2, EINVAL 3 */
 /* (m, c) lies in one magnitude class; false for non-finite m or c. */
 int xu_pair_in_domain(double m, double c);
 /* Row i of the output is in the proven domain (all 10 inputs it reads are

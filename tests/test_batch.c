@@ -110,11 +110,6 @@ typedef struct stats {
     long special;                             /* special-value inputs         */
 } stats;
 
-static int severity(cbx_status s)
-{
-    return s == CBX_EINVAL ? 3 : s == CBX_ERANGE ? 2 : s == CBX_EMPTY ? 1 : 0;
-}
-
 static double sgm(xu_rng *r, int emin, int emax) { return xu_gen_signed(r, emin, emax); }
 
 static void gen_map(xu_rng *r, cbx_affine *a, int kind)
@@ -412,7 +407,7 @@ static void run_batch(stats *st, xu_exact *x, const cbx_affine *a, const cbx_box
             st->fail[K_STATUS]++;
             bad = 1;
         }
-        if (severity(s) > severity(want)) want = s;
+        if (xu_severity(s) > xu_severity(want)) want = s;
     }
 
     /* the batch, into out[GUARD .. GUARD+n-1] with guards around */

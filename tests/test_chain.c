@@ -375,12 +375,6 @@ static int cbox_step(ctx *k, const cbx_affine *a, const cbx_cbox *in, cbx_cbox *
 
 /* a / b for the statistics; +inf where a width is infinite (a chain that
  * left the domain), so that no NaN reaches the sort */
-/* Severity order of the statuses (the chain's status is the worst). */
-static int sev_of(cbx_status s)
-{
-    return s == CBX_EINVAL ? 3 : s == CBX_ERANGE ? 2 : s == CBX_EMPTY ? 1 : 0;
-}
-
 static int is_whole(const cbx_box *b)
 {
     int i;
@@ -574,7 +568,7 @@ int main(int argc, char **argv)
                 bad_chain = 1;
             }
             if (v.got != CBX_OK && left_box < 0) left_box = s + 1;
-            if (sev_of(v.got) > sev_of(worst)) worst = v.got;
+            if (xu_severity(v.got) > xu_severity(worst)) worst = v.got;
             cbx_prepare(&a, &pr[s]);
             b = bn;
             /* cbox chain */
