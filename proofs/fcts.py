@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """The functions of a proof job, read off the tree (proofs/job.sh).
 
-    python3 proofs/fcts.py TU GROUP     a comma list of function names
+    python3 proofs/fcts.py TU GROUP [--dead-code | --no-dead-code]
+                                        a comma list of function names
+    python3 proofs/fcts.py TU --callers NAME
+                                        the functions of TU that call NAME
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
 proj_f.c).  It is
@@ -27,6 +30,21 @@ follow the layers of src/:
              (CBX_BALL_LEMMAS), which no other goal of the unit carries
     ballsplit  the same file's functions marked for -wp-split
 
+    all      every function the unit defines
+
+GROUP may be a comma list of groups (their union).  The smoke jobs split
+a group in two (proofs/job.sh, SMOKE, says why):
+
+    --dead-code     the functions that call a function without a body in
+                    the unit (a trusted contract: cbx_pinf, cbx_sqrt_rn,
+                    cbx_two_sum, ...; proofs/README.md, "Trusted base"), and
+                    the entry points: the functions defined without
+                    `static`, and those no function of the unit calls
+    --no-dead-code  the rest: internal functions that call only functions
+                    with a proved body
+
+Either may leave nothing: then the output is empty and the exit status 0.
+
 The rest of a unit (the algorithms of src/algo/*.c) is what a job's
 -wp-skip-fct of these groups leaves.
 """
@@ -40,11 +58,15 @@ MARK = '/* proof: -wp-split */'
 DEF = re.compile(r'^(?!typedef\b|extern\b)[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\s*\(')
 
 
-def definitions(tu):
-    """[(file, name, split)] of every function defined in the unit"""
+def preprocess(tu):
+    """the unit as Frama-C's preprocessing sees it, comments kept"""
     incs = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
-    text = subprocess.check_output(['gcc', '-E', '-C', '-D__FRAMAC__'] + incs + ['-Ispecs', tu],
+    return subprocess.check_output(['gcc', '-E', '-C', '-D__FRAMAC__'] + incs + ['-Ispecs', tu],
                                    cwd=ROOT, text=True)
+
+
+def definitions(text):
+    """[(file, name, split)] of every function defined in the unit"""
     lines = text.split('\n')
     cur, split, seen, out = None, False, set(), []
     for k, ln in enumerate(lines):
@@ -71,6 +93,44 @@ def definitions(tu):
     return out
 
 
+KEYWORDS = {'if', 'for', 'while', 'switch', 'return', 'sizeof', 'do'}
+
+
+def callees(text, public=None):
+    """{name: set of the names its body calls} for every function defined in
+    the unit, read off the code without comments (ACSL included); the names
+    of the functions defined without `static` are added to the set public
+    when one is given"""
+    code = re.sub(r'/\*.*?\*/', ' ', text, flags=re.S)
+    code = re.sub(r'//[^\n]*|^#[^\n]*', ' ', code, flags=re.M)
+    out = {}
+    for m in re.finditer(r'\b([A-Za-z_]\w*)\s*\((?:[^;{()]|\([^()]*\))*\)\s*\{', code):
+        name = m.group(1)
+        if name in KEYWORDS or name in out:
+            continue
+        depth, k = 0, m.end() - 1
+        for k in range(m.end() - 1, len(code)):
+            depth += {'{': 1, '}': -1}.get(code[k], 0)
+            if depth == 0:
+                break
+        out[name] = set(re.findall(r'\b([A-Za-z_]\w*)\s*\(', code[m.end():k])) - KEYWORDS
+        head = code[max(code.rfind(';', 0, m.start()), code.rfind('}', 0, m.start())) + 1:m.start()]
+        if public is not None and 'static' not in head.split():
+            public.add(name)
+    return out
+
+
+def smoke_full(text):
+    """the functions whose smoke tests include dead code (proofs/job.sh,
+    SMOKE): those whose body calls a function the unit does not define (a
+    trusted contract), and the entry points, the public functions and those
+    no function of the unit calls"""
+    public = set()
+    calls = callees(text, public)
+    called = set().union(*calls.values())
+    return {n for n, c in calls.items() if c - set(calls) or n in public or n not in called}
+
+
 def group(defs, g):
     def under(f, folder, ext):
         return f.startswith(folder) and f.endswith(ext)
@@ -93,15 +153,29 @@ def group(defs, g):
         return [n for f, n, s in defs if not s and f in ball]
     if g == 'ballsplit':
         return [n for f, n, s in defs if s and f in ball]
+    if g == 'all':
+        return [n for f, n, s in defs]
     sys.exit('fcts.py: unknown group %s' % g)
 
 
 def main():
-    if len(sys.argv) != 3:
+    if len(sys.argv) == 4 and sys.argv[2] == '--callers':
+        calls = callees(preprocess(sys.argv[1]))
+        print(','.join(n for n, c in calls.items() if sys.argv[3] in c))
+        return
+    if len(sys.argv) not in (3, 4) or sys.argv[3:] not in ([], ['--dead-code'], ['--no-dead-code']):
         sys.exit(__doc__)
-    names = group(definitions(sys.argv[1]), sys.argv[2])
+    text = preprocess(sys.argv[1])
+    defs = definitions(text)
+    names = [n for g in sys.argv[2].split(',') for n in group(defs, g)]
     if not names:
         sys.exit('fcts.py: group %s of %s is empty' % (sys.argv[2], sys.argv[1]))
+    if sys.argv[3:]:
+        tc = smoke_full(text)
+        missing = set(names) - set(callees(text))
+        if missing:
+            sys.exit('fcts.py: no body found for %s' % ','.join(sorted(missing)))
+        names = [n for n in names if (n in tc) == (sys.argv[3] == '--dead-code')]
     print(','.join(names))
 
 

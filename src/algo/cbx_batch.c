@@ -16,6 +16,7 @@
  */
 #include "certbox.h"
 #include "cbx_onebox.h"
+#include "cbx_domain.h"
 /* The per-box kernel: the class kernel in binary64, the general one in
  * binary32 (where CBX_CLS_ARG and the class clauses vanish). */
 #if CBX_INST == 64
@@ -29,18 +30,6 @@
 #define CBX_ONE_BOX(a, b) one_box(a, b)
 #define CBX_IS_GENERAL 1
 #endif
-
-/* Severity order of the statuses (specs: sev). */
-/*@ assigns \nothing;
-    ensures \result == sev(s);
-*/
-static int severity(cbx_status s)
-{
-    if (s == CBX_EINVAL) return 3;
-    if (s == CBX_ERANGE) return 2;
-    if (s == CBX_EMPTY) return 1;
-    return 0;
-}
 
 /* Write out[k]; every other out[j] is left alone (a small goal of its own:
  * with the box promise in context the provers do not find this frame). */
@@ -111,7 +100,7 @@ static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_b
               box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]); */
         /*@ assert sevk: \forall integer j; j == k ==>
               box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(s)); */
-        if (severity(s) > severity(worst))
+        if (cbx_severity(s) > cbx_severity(worst))
             worst = s;
     }
     /*@ assert kn: k == n; */

@@ -252,4 +252,22 @@ static inline void set_empty2(cbx_box2 *out)
     out->lo[1] = cbx_pinf(); out->hi[1] = cbx_ninf();
 }
 
+/* The severity order of the statuses (specs: sev), for "the most severe
+ * status met" of the batch and chain functions. */
+/*@ assigns \nothing;
+    ensures val: \result == sev(s);
+*/
+static inline int cbx_severity(cbx_status s)
+{
+    int r = 0;
+    if (s == CBX_EINVAL) {
+        r = 3;
+    } else if (s == CBX_ERANGE) {
+        r = 2;
+    } else if (s == CBX_EMPTY) {
+        r = 1;
+    }
+    return r;
+}
+
 #endif /* CBX_DOMAIN_H */

@@ -1,10 +1,11 @@
 /*
  * Chains of maps: the box of a box under p[0] p[1] ... p[n-1] (p[n-1]
- * applied first), one map at a time with cbx_transform_box_prep.
+ * applied first), one map at a time with cbx_transform_box_as (the map's
+ * class from cbx_prepare).
  *
  * Soundness is an induction over the chain: before step k the current box
  * holds the image of every real point of the input under p[k+1 .. n-1]
- * (chain_x); cbx_transform_box_prep's promise on one axis (axis_sound_s)
+ * (chain_x); cbx_transform_box_as's promise on one axis (axis_sound_s)
  * holds the image of every real point of its input box (lemma
  * axis_sound_pt), and the image of the chain's image under p[k] is the
  * chain's image one step longer (the definition of chain_x).  A NaN, an
@@ -14,26 +15,6 @@
 #include "certbox.h"
 #include "cbx_round.h"
 #include "cbx_domain.h"
-
-/* The more severe of two statuses (specs: sev), one of them. */
-/*@ requires a: a == CBX_OK || a == CBX_EMPTY || a == CBX_ERANGE || a == CBX_EINVAL;
-    requires b: b == CBX_OK || b == CBX_EMPTY || b == CBX_ERANGE || b == CBX_EINVAL;
-    assigns \nothing;
-    ensures one: \result == a || \result == b;
-    ensures worst: sev(\result) >= sev(a) && sev(\result) >= sev(b);
-*/
-static cbx_status chain_worse(cbx_status a, cbx_status b)
-{
-    cbx_status r = CBX_OK;
-    if (a == CBX_EINVAL || b == CBX_EINVAL) {
-        r = CBX_EINVAL;
-    } else if (a == CBX_ERANGE || b == CBX_ERANGE) {
-        r = CBX_ERANGE;
-    } else if (a == CBX_EMPTY || b == CBX_EMPTY) {
-        r = CBX_EMPTY;
-    }
-    return r;
-}
 
 /* One step: *b becomes the box of *b under *a (cbx_transform_box_as with
  * the class cls), stated as the step of the induction: the image of every
@@ -107,7 +88,9 @@ cbx_status cbx_transform_box_chain(const cbx_prepared *p, size_t n, const cbx_bo
                && ext_in(lin3(\at(p[kk].a.m[2][0], Pre), \at(p[kk].a.m[2][1], Pre),
                               \at(p[kk].a.m[2][2], Pre), \at(p[kk].a.m[2][3], Pre), q0, q1, q2),
                          cur.lo[2], cur.hi[2])); */
-        st = chain_worse(st, sk);
+        if (cbx_severity(sk) > cbx_severity(st)) {
+            st = sk;
+        }
     }
     l0 = cur.lo[0]; l1 = cur.lo[1]; l2 = cur.lo[2];
     h0 = cur.hi[0]; h1 = cur.hi[1]; h2 = cur.hi[2];
