@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The functions of a proof job, read off the tree (proofs/job.sh).
 
-    python3 proofs/fcts.py TU GROUP [--dead-code | --no-dead-code]
+    python3 proofs/fcts.py TU GROUP [--dead-code]
                                         a comma list of function names
     python3 proofs/fcts.py TU --callers NAME
                                         the functions of TU that call NAME
@@ -32,18 +32,14 @@ follow the layers of src/:
 
     all      every function the unit defines
 
-GROUP may be a comma list of groups (their union).  The smoke jobs split
-a group in two (proofs/job.sh, SMOKE, says why):
+GROUP may be a comma list of groups (their union).  The smoke jobs keep
+part of a group (proofs/job.sh, SMOKE, says why):
 
     --dead-code     the functions that call a function without a body in
                     the unit (a trusted contract: cbx_pinf, cbx_sqrt_rn,
                     cbx_two_sum, ...; proofs/README.md, "Trusted base"), and
                     the entry points: the functions defined without
                     `static`, and those no function of the unit calls
-    --no-dead-code  the rest: internal functions that call only functions
-                    with a proved body
-
-Either may leave nothing: then the output is empty and the exit status 0.
 
 The rest of a unit (the algorithms of src/algo/*.c) is what a job's
 -wp-skip-fct of these groups leaves.
@@ -163,7 +159,7 @@ def main():
         calls = callees(preprocess(sys.argv[1]))
         print(','.join(n for n, c in calls.items() if sys.argv[3] in c))
         return
-    if len(sys.argv) not in (3, 4) or sys.argv[3:] not in ([], ['--dead-code'], ['--no-dead-code']):
+    if len(sys.argv) not in (3, 4) or sys.argv[3:] not in ([], ['--dead-code']):
         sys.exit(__doc__)
     text = preprocess(sys.argv[1])
     defs = definitions(text)
@@ -175,7 +171,9 @@ def main():
         missing = set(names) - set(callees(text))
         if missing:
             sys.exit('fcts.py: no body found for %s' % ','.join(sorted(missing)))
-        names = [n for n in names if (n in tc) == (sys.argv[3] == '--dead-code')]
+        names = [n for n in names if n in tc]
+        if not names:
+            sys.exit('fcts.py: no function of group %s of %s needs smoke tests' % (sys.argv[2], sys.argv[1]))
     print(','.join(names))
 
 

@@ -13,27 +13,26 @@ set -u
 . scripts/teeth_copy.sh
 teeth_setup smoke-teeth
 STEPS=${CBX_SMOKE_STEPS:-60000}
-# the smoke options of proofs/job.sh: dead-call tests off, and dead-code
-# tests only in a function that calls a trusted contract (see there)
+# the smoke options of proofs/job.sh (dead-call tests off), in the functions
+# its smoke jobs test (see there)
 NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@invariant,-@variant,-@breaks,-@continues,-@returns,-@complete_behaviors,-@disjoint_behaviors,-@terminates,-@decreases,-@check"
 pass=0; fail=0
 # case NAME FILE FUNCTION TU OLD NEW [LABEL]: replace OLD by NEW in FILE,
-# then as proofs/job.sh checks FUNCTION: its smoke tests (with the
-# dead-code tests where the job runs them) must find one that does not pass;
-# or, for an internal function whose smoke tests leave dead code out (the
-# job runs none for it but the assumes and loop tests), the precondition
-# LABEL must stay unproved at some call (every caller proved for LABEL
-# alone, as the regular jobs prove it): an inconsistent precondition of a
-# function that only proved code calls is caught there (proofs/job.sh,
-# SMOKE).
+# then as proofs/job.sh checks FUNCTION: where the smoke jobs test it (an
+# entry point, or a caller of a trusted contract: proofs/fcts.py
+# --dead-code), its smoke tests must find one that does not pass; for an
+# internal function (no smoke test), the precondition LABEL must stay
+# unproved at some call (every caller proved for LABEL alone, as the
+# regular jobs prove it): an inconsistent precondition of a function that
+# only proved code calls is caught there (proofs/job.sh, SMOKE).
 case_() {
   name=$1; file=$2; fct=$3; tu=$4; old=$5; new=$6; label=${7:-}
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
   fam=64; case $tu in *_f.c) fam=32;; esac
-  dead=-wp-no-smoke-dead-code
-  python3 proofs/fcts.py "$tu" all --dead-code | tr , '\n' | grep -qx "$fct" && dead=""
-  if [ -n "$dead" ] && [ -n "$label" ]; then
+  smoked=0
+  python3 proofs/fcts.py "$tu" all --dead-code | tr , '\n' | grep -qx "$fct" && smoked=1
+  if [ $smoked = 0 ]; then
     callers=$(python3 proofs/fcts.py "$tu" --callers "$fct")
     (cd "$d" && frama-c $(teeth_incs "$d") ${DEFS:-} "$tu" \
        -wp -wp-rte -wp-prover "cvc4r$fam" -wp-timeout 10 -wp-par 2 -wp-cache none \
@@ -48,7 +47,7 @@ case_() {
     return
   fi
   (cd "$d" && frama-c $(teeth_incs "$d") "$tu" \
-     -wp -wp-rte -wp-smoke-tests -wp-no-smoke-dead-call $dead -wp-prover "cvc4r$fam" -wp-steps "$STEPS" -wp-smoke-timeout 30 \
+     -wp -wp-rte -wp-smoke-tests -wp-no-smoke-dead-call -wp-prover "cvc4r$fam" -wp-steps "$STEPS" -wp-smoke-timeout 30 \
      -wp-par 2 -wp-cache none $NOGOALS -wp-fct "$fct" > "$d/smoke.log" 2>&1) || true
   # WP prints [Passed] for a smoke test the prover could not refute (the
   # context is consistent) and [Failed] for one it could
@@ -104,8 +103,8 @@ case_ trusted-post src/core/cbx_round.h ball_radius proofs/all.c \
   "    ensures fin: \\is_finite(\\result) && \\result >= 0 && \\result < 0;
     ensures up:"
 # 4. an inconsistent loop invariant (in a public function; an internal
-#    function's smoke tests leave dead code out, and an inconsistent
-#    invariant is one that the regular proof cannot establish)
+#    function has no smoke test, and an inconsistent invariant is one that
+#    the regular proof cannot establish)
 case_ loop-invariant src/f64/cbx_chain.c cbx_transform_box_chain proofs/all.c \
   "    /*@ loop invariant rng: 0 <= k <= n;" \
   "    /*@ loop invariant rng: 0 <= k <= n && k > n;"
