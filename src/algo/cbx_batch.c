@@ -60,12 +60,13 @@ static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_bo
                        cbx_box *out, size_t k, size_t n)
 {
     box_st r;
-    if (fast)
+    if (fast) {
         r = one_fast(a, in + k);
-    else if (CBX_IS_GENERAL)
+    } else if (CBX_IS_GENERAL) {
         r = one_box(a, in + k);
-    else
+    } else {
         r = CBX_ONE_BOX(a, in + k);
+    }
     put_box(out, k, n, r.o);
     return r.s;
 }
@@ -100,8 +101,9 @@ static cbx_status batch(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_b
               box_done_m(CBX_AV(a, Pre), CBX_BV(in + j, Pre), out[j]); */
         /*@ assert sevk: \forall integer j; j == k ==>
               box_sev_v(CBX_AV(a, Pre), CBX_BV(in + j, Pre), sev(s)); */
-        if (cbx_severity(s) > cbx_severity(worst))
+        if (cbx_severity(s) > cbx_severity(worst)) {
             worst = s;
+        }
     }
     /*@ assert kn: k == n; */
     return worst;

@@ -105,9 +105,12 @@ static cbox_axis_result cbox_transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx
         r.h = k.h;
         r.ok = 1;
     } else if (cbx_fin4(m0, m1, m2, t)) {
-        cbx_fp e0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : c0, g0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : h0;
-        cbx_fp e1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : c1, g1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : h1;
-        cbx_fp e2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : c2, g2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : h2;
+        cbx_fp e0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : c0;
+        cbx_fp g0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : h0;
+        cbx_fp e1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : c1;
+        cbx_fp g1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : h1;
+        cbx_fp e2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : c2;
+        cbx_fp g2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : h2;
         /*@ assert dz: e0 == dz(m0, c0) && e1 == dz(m1, c1) && e2 == dz(m2, c2)
                        && g0 == dz(m0, h0) && g1 == dz(m1, h1) && g2 == dz(m2, h2); */
         if (cbx_row_ok(m0, m1, m2, t, e0, g0, e1, g1, e2, g2)) {
@@ -162,11 +165,24 @@ cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox 
         cbox_set_empty(out);
         return CBX_EMPTY;
     }
-    cbx_fp c0 = in->c[0], c1 = in->c[1], c2 = in->c[2];
-    cbx_fp h0 = in->h[0], h1 = in->h[1], h2 = in->h[2];
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp c0 = in->c[0];
+    cbx_fp c1 = in->c[1];
+    cbx_fp c2 = in->c[2];
+    cbx_fp h0 = in->h[0];
+    cbx_fp h1 = in->h[1];
+    cbx_fp h2 = in->h[2];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
+    cbx_fp a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0];
+    cbx_fp a21 = a->m[2][1];
+    cbx_fp a22 = a->m[2][2];
+    cbx_fp a23 = a->m[2][3];
     cbox_axis_result r0 = cbox_transform_axis(a00, a01, a02, a03, c0, c1, c2, h0, h1, h2);
     cbox_axis_result r1 = cbox_transform_axis(a10, a11, a12, a13, c0, c1, c2, h0, h1, h2);
     cbox_axis_result r2 = cbox_transform_axis(a20, a21, a22, a23, c0, c1, c2, h0, h1, h2);
@@ -235,10 +251,16 @@ cbx_status cbx_transform_cbox2(const cbx_affine2 *a, const cbx_cbox2 *in, cbx_cb
         return CBX_EMPTY;
     }
     cbx_fp z = CBX_C(0.0);
-    cbx_fp c0 = in->c[0], c1 = in->c[1];
-    cbx_fp h0 = in->h[0], h1 = in->h[1];
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2];
+    cbx_fp c0 = in->c[0];
+    cbx_fp c1 = in->c[1];
+    cbx_fp h0 = in->h[0];
+    cbx_fp h1 = in->h[1];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
     cbox_axis_result r0 = cbox_transform_axis(a00, a01, z, a02, c0, c1, z, h0, h1, z);
     cbox_axis_result r1 = cbox_transform_axis(a10, a11, z, a12, c0, c1, z, h0, h1, z);
     out->c[0] = r0.c; out->h[0] = r0.h;

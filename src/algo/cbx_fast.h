@@ -140,11 +140,24 @@ static inline cbx_ends cbx_fast_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
 */
 static inline cbx_status cbx_fast_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    cbx_fp l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    cbx_fp h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp l0 = in->lo[0];
+    cbx_fp l1 = in->lo[1];
+    cbx_fp l2 = in->lo[2];
+    cbx_fp h0 = in->hi[0];
+    cbx_fp h1 = in->hi[1];
+    cbx_fp h2 = in->hi[2];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
+    cbx_fp a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0];
+    cbx_fp a21 = a->m[2][1];
+    cbx_fp a22 = a->m[2][2];
+    cbx_fp a23 = a->m[2][3];
     cbx_ends r0 = cbx_fast_axis(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
     cbx_ends r1 = cbx_fast_axis(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
     cbx_ends r2 = cbx_fast_axis(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);

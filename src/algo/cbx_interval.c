@@ -165,8 +165,9 @@ static int any_nan(const cbx_affine *a, const cbx_box *in)
 /* proof: -wp-split */
 cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    if (cbx_map_fast(a) && cbx_box_fast(in))
+    if (cbx_map_fast(a) && cbx_box_fast(in)) {
         return cbx_fast_box(a, in, out);
+    }
     if (any_nan(a, in)) {
         set_whole(out);
         return CBX_EINVAL;
@@ -175,11 +176,24 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
         set_empty(out);
         return CBX_EMPTY;
     }
-    cbx_fp l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    cbx_fp h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp l0 = in->lo[0];
+    cbx_fp l1 = in->lo[1];
+    cbx_fp l2 = in->lo[2];
+    cbx_fp h0 = in->hi[0];
+    cbx_fp h1 = in->hi[1];
+    cbx_fp h2 = in->hi[2];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
+    cbx_fp a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0];
+    cbx_fp a21 = a->m[2][1];
+    cbx_fp a22 = a->m[2][2];
+    cbx_fp a23 = a->m[2][3];
     axis_result r0 = transform_axis(a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
     axis_result r1 = transform_axis(a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
     axis_result r2 = transform_axis(a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
@@ -225,10 +239,16 @@ cbx_status cbx_transform_box2(const cbx_affine2 *a, const cbx_box2 *in, cbx_box2
         return CBX_EMPTY;
     }
     cbx_fp z = CBX_C(0.0);
-    cbx_fp l0 = in->lo[0], l1 = in->lo[1];
-    cbx_fp h0 = in->hi[0], h1 = in->hi[1];
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2];
+    cbx_fp l0 = in->lo[0];
+    cbx_fp l1 = in->lo[1];
+    cbx_fp h0 = in->hi[0];
+    cbx_fp h1 = in->hi[1];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
     axis_result r0 = transform_axis(a00, a01, z, a02, l0, h0, l1, h1, z, z);
     axis_result r1 = transform_axis(a10, a11, z, a12, l0, h0, l1, h1, z, z);
     out->lo[0] = r0.lo; out->hi[0] = r0.hi;
@@ -249,9 +269,18 @@ void cbx_prepare(const cbx_affine *a, cbx_prepared *p)
 {
     /* entry by entry: a struct copy may compile to a call to memcpy, and
      * the library needs no libc (make embedded) */
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
+    cbx_fp a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0];
+    cbx_fp a21 = a->m[2][1];
+    cbx_fp a22 = a->m[2][2];
+    cbx_fp a23 = a->m[2][3];
     p->a.m[0][0] = a00; p->a.m[0][1] = a01; p->a.m[0][2] = a02; p->a.m[0][3] = a03;
     p->a.m[1][0] = a10; p->a.m[1][1] = a11; p->a.m[1][2] = a12; p->a.m[1][3] = a13;
     p->a.m[2][0] = a20; p->a.m[2][1] = a21; p->a.m[2][2] = a22; p->a.m[2][3] = a23;
@@ -270,10 +299,12 @@ void cbx_prepare(const cbx_affine *a, cbx_prepared *p)
 cbx_status cbx_transform_box_prep(const cbx_prepared *p, const cbx_box *in, cbx_box *out)
 {
 #if CBX_INST == 64
-    if (p->cls != (int)CBX_CLASS_GENERAL)
+    if (p->cls != (int)CBX_CLASS_GENERAL) {
         return cbx_transform_box_as(&p->a, (cbx_class)p->cls, in, out);
+    }
 #endif
-    if (p->fast && cbx_box_fast(in))
+    if (p->fast && cbx_box_fast(in)) {
         return cbx_fast_box(&p->a, in, out);
+    }
     return cbx_transform_box(&p->a, in, out);
 }

@@ -215,16 +215,20 @@ static cbx_qcorner proj_corner(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
     r.wl = we.lo;
     r.ok = 0;
     if (we.lo > CBX_C(0.0)) {
-        cbx_fp bl, bh; /* the divisor of each end */
-        int ql, qh;
-        if (xe.lo >= CBX_C(0.0))
+        cbx_fp bl; /* the divisor of each end */
+        cbx_fp bh;
+        int ql;
+        int qh;
+        if (xe.lo >= CBX_C(0.0)) {
             bl = we.hi;
-        else
+        } else {
             bl = we.lo;
-        if (xe.hi >= CBX_C(0.0))
+        }
+        if (xe.hi >= CBX_C(0.0)) {
             bh = we.lo;
-        else
+        } else {
             bh = we.hi;
+        }
         ql = cbx_quot_ok(xe.lo, bl);
         qh = cbx_quot_ok(xe.hi, bh);
         r.ok = 1;
@@ -494,12 +498,28 @@ cbx_status cbx_project_box(const cbx_proj *p, const cbx_box *in, cbx_box *out)
         return CBX_ERANGE;
     }
     {
-        cbx_fp l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-        cbx_fp h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-        cbx_fp a00 = p->m[0][0], a01 = p->m[0][1], a02 = p->m[0][2], a03 = p->m[0][3];
-        cbx_fp a10 = p->m[1][0], a11 = p->m[1][1], a12 = p->m[1][2], a13 = p->m[1][3];
-        cbx_fp a20 = p->m[2][0], a21 = p->m[2][1], a22 = p->m[2][2], a23 = p->m[2][3];
-        cbx_fp w0 = p->m[3][0], w1 = p->m[3][1], w2 = p->m[3][2], wt = p->m[3][3];
+        cbx_fp l0 = in->lo[0];
+        cbx_fp l1 = in->lo[1];
+        cbx_fp l2 = in->lo[2];
+        cbx_fp h0 = in->hi[0];
+        cbx_fp h1 = in->hi[1];
+        cbx_fp h2 = in->hi[2];
+        cbx_fp a00 = p->m[0][0];
+        cbx_fp a01 = p->m[0][1];
+        cbx_fp a02 = p->m[0][2];
+        cbx_fp a03 = p->m[0][3];
+        cbx_fp a10 = p->m[1][0];
+        cbx_fp a11 = p->m[1][1];
+        cbx_fp a12 = p->m[1][2];
+        cbx_fp a13 = p->m[1][3];
+        cbx_fp a20 = p->m[2][0];
+        cbx_fp a21 = p->m[2][1];
+        cbx_fp a22 = p->m[2][2];
+        cbx_fp a23 = p->m[2][3];
+        cbx_fp w0 = p->m[3][0];
+        cbx_fp w1 = p->m[3][1];
+        cbx_fp w2 = p->m[3][2];
+        cbx_fp wt = p->m[3][3];
         cbx_wc v0 = proj_wc(w0, w1, w2, wt, l0, l1, l2);
         cbx_wc v1 = proj_wc(w0, w1, w2, wt, h0, l1, l2);
         cbx_wc v2 = proj_wc(w0, w1, w2, wt, l0, h1, l2);

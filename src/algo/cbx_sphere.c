@@ -271,10 +271,18 @@ static conv_res ball_axis_bounds(cbx_fp b0, cbx_fp b1, cbx_fp b2, cbx_fp t)
 */
 static int sph_ok(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
 {
-    if (!cbx_is_fin(m0) || !cbx_is_fin(m1) || !cbx_is_fin(m2) || !cbx_is_fin(t)) return 0;
-    if (!cbx_cls(m0, m0, CBX_K(SB), CBX_K(SB))) return 0;
-    if (!cbx_cls(m1, m1, CBX_K(SB), CBX_K(SB))) return 0;
-    if (!cbx_cls(m2, m2, CBX_K(SB), CBX_K(SB))) return 0;
+    if (!cbx_is_fin(m0) || !cbx_is_fin(m1) || !cbx_is_fin(m2) || !cbx_is_fin(t)) {
+        return 0;
+    }
+    if (!cbx_cls(m0, m0, CBX_K(SB), CBX_K(SB))) {
+        return 0;
+    }
+    if (!cbx_cls(m1, m1, CBX_K(SB), CBX_K(SB))) {
+        return 0;
+    }
+    if (!cbx_cls(m2, m2, CBX_K(SB), CBX_K(SB))) {
+        return 0;
+    }
     return t >= -CBX_K(RT) && t <= CBX_K(RT);
 }
 
@@ -328,9 +336,18 @@ cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
         sph_whole(out, 2);
         return CBX_EINVAL;
     }
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    cbx_fp a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a03 = a->m[0][3];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
+    cbx_fp a13 = a->m[1][3];
+    cbx_fp a20 = a->m[2][0];
+    cbx_fp a21 = a->m[2][1];
+    cbx_fp a22 = a->m[2][2];
+    cbx_fp a23 = a->m[2][3];
     ball_res e0 = sphere_axis(a00, a01, a02, a03);
     ball_res e1 = sphere_axis(a10, a11, a12, a13);
     ball_res e2 = sphere_axis(a20, a21, a22, a23);
@@ -388,11 +405,21 @@ static conv_res ell_axis_bounds(cbx_fp r0, cbx_fp r1, cbx_fp r2,
 */
 static int ell_ok(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_fp d2, cbx_fp c)
 {
-    if (!cbx_is_fin(r0) || !cbx_is_fin(r1) || !cbx_is_fin(r2)) return 0;
-    if (!cbx_is_fin(d0) || !cbx_is_fin(d1) || !cbx_is_fin(d2) || !cbx_is_fin(c)) return 0;
-    if (!cbx_cls(r0, d0, CBX_K(EB), CBX_K(EB))) return 0;
-    if (!cbx_cls(r1, d1, CBX_K(EB), CBX_K(EB))) return 0;
-    if (!cbx_cls(r2, d2, CBX_K(EB), CBX_K(EB))) return 0;
+    if (!cbx_is_fin(r0) || !cbx_is_fin(r1) || !cbx_is_fin(r2)) {
+        return 0;
+    }
+    if (!cbx_is_fin(d0) || !cbx_is_fin(d1) || !cbx_is_fin(d2) || !cbx_is_fin(c)) {
+        return 0;
+    }
+    if (!cbx_cls(r0, d0, CBX_K(EB), CBX_K(EB))) {
+        return 0;
+    }
+    if (!cbx_cls(r1, d1, CBX_K(EB), CBX_K(EB))) {
+        return 0;
+    }
+    if (!cbx_cls(r2, d2, CBX_K(EB), CBX_K(EB))) {
+        return 0;
+    }
     return c >= -CBX_K(RT) && c <= CBX_K(RT);
 }
 
@@ -447,11 +474,21 @@ cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
         sph_whole(out, 2);
         return CBX_EINVAL;
     }
-    cbx_fp d0 = radii[0], d1 = radii[1], d2 = radii[2];
-    cbx_fp c0 = center[0], c1 = center[1], c2 = center[2];
-    cbx_fp r00 = rot[0][0], r01 = rot[0][1], r02 = rot[0][2];
-    cbx_fp r10 = rot[1][0], r11 = rot[1][1], r12 = rot[1][2];
-    cbx_fp r20 = rot[2][0], r21 = rot[2][1], r22 = rot[2][2];
+    cbx_fp d0 = radii[0];
+    cbx_fp d1 = radii[1];
+    cbx_fp d2 = radii[2];
+    cbx_fp c0 = center[0];
+    cbx_fp c1 = center[1];
+    cbx_fp c2 = center[2];
+    cbx_fp r00 = rot[0][0];
+    cbx_fp r01 = rot[0][1];
+    cbx_fp r02 = rot[0][2];
+    cbx_fp r10 = rot[1][0];
+    cbx_fp r11 = rot[1][1];
+    cbx_fp r12 = rot[1][2];
+    cbx_fp r20 = rot[2][0];
+    cbx_fp r21 = rot[2][1];
+    cbx_fp r22 = rot[2][2];
     ball_res e0 = ellipsoid_axis(r00, r01, r02, d0, d1, d2, c0);
     ball_res e1 = ellipsoid_axis(r10, r11, r12, d0, d1, d2, c1);
     ball_res e2 = ellipsoid_axis(r20, r21, r22, d0, d1, d2, c2);
@@ -483,8 +520,12 @@ cbx_status cbx_disk_box2(const cbx_affine2 *a, cbx_box2 *out)
         return CBX_EINVAL;
     }
     cbx_fp z = CBX_C(0.0);
-    cbx_fp a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2];
-    cbx_fp a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2];
+    cbx_fp a00 = a->m[0][0];
+    cbx_fp a01 = a->m[0][1];
+    cbx_fp a02 = a->m[0][2];
+    cbx_fp a10 = a->m[1][0];
+    cbx_fp a11 = a->m[1][1];
+    cbx_fp a12 = a->m[1][2];
     ball_res e0 = sphere_axis(a00, a01, z, a02);
     ball_res e1 = sphere_axis(a10, a11, z, a12);
     out->lo[0] = e0.lo; out->hi[0] = e0.hi;
@@ -516,10 +557,14 @@ cbx_status cbx_ellipse_box2(const cbx_fp center[2], const cbx_fp radii[2],
         return CBX_EINVAL;
     }
     cbx_fp z = CBX_C(0.0);
-    cbx_fp d0 = radii[0], d1 = radii[1];
-    cbx_fp c0 = center[0], c1 = center[1];
-    cbx_fp r00 = rot[0][0], r01 = rot[0][1];
-    cbx_fp r10 = rot[1][0], r11 = rot[1][1];
+    cbx_fp d0 = radii[0];
+    cbx_fp d1 = radii[1];
+    cbx_fp c0 = center[0];
+    cbx_fp c1 = center[1];
+    cbx_fp r00 = rot[0][0];
+    cbx_fp r01 = rot[0][1];
+    cbx_fp r10 = rot[1][0];
+    cbx_fp r11 = rot[1][1];
     ball_res e0 = ellipsoid_axis(r00, r01, z, d0, d1, z, c0);
     ball_res e1 = ellipsoid_axis(r10, r11, z, d0, d1, z, c1);
     out->lo[0] = e0.lo; out->hi[0] = e0.hi;

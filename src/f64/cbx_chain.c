@@ -42,9 +42,18 @@ cbx_status cbx_transform_box_chain(const cbx_prepared *p, size_t n, const cbx_bo
     cbx_status st = CBX_OK;
     size_t k = n;
     cbx_box cur;
-    const double i0 = in->lo[0], i1 = in->lo[1], i2 = in->lo[2];
-    const double j0 = in->hi[0], j1 = in->hi[1], j2 = in->hi[2];
-    double l0, l1, l2, h0, h1, h2;
+    const double i0 = in->lo[0];
+    const double i1 = in->lo[1];
+    const double i2 = in->lo[2];
+    const double j0 = in->hi[0];
+    const double j1 = in->hi[1];
+    const double j2 = in->hi[2];
+    double l0;
+    double l1;
+    double l2;
+    double h0;
+    double h1;
+    double h2;
     if (n == 0U) {
         set_whole(out);
         return CBX_EINVAL;

@@ -174,11 +174,24 @@ static void full_row(double m0, double m1, double m2, double t,
 */
 static cbx_status fast_identity(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    double l0 = in->lo[0];
+    double l1 = in->lo[1];
+    double l2 = in->lo[2];
+    double h0 = in->hi[0];
+    double h1 = in->hi[1];
+    double h2 = in->hi[2];
+    double a00 = a->m[0][0];
+    double a01 = a->m[0][1];
+    double a02 = a->m[0][2];
+    double a03 = a->m[0][3];
+    double a10 = a->m[1][0];
+    double a11 = a->m[1][1];
+    double a12 = a->m[1][2];
+    double a13 = a->m[1][3];
+    double a20 = a->m[2][0];
+    double a21 = a->m[2][1];
+    double a22 = a->m[2][2];
+    double a23 = a->m[2][3];
     span_id(a00, a03, l0, h0);
     span_id(a11, a13, l1, h1);
     span_id(a22, a23, l2, h2);
@@ -207,11 +220,24 @@ static cbx_status fast_identity(const cbx_affine *a, const cbx_box *in, cbx_box 
 */
 static cbx_status fast_translate(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    double l0 = in->lo[0];
+    double l1 = in->lo[1];
+    double l2 = in->lo[2];
+    double h0 = in->hi[0];
+    double h1 = in->hi[1];
+    double h2 = in->hi[2];
+    double a00 = a->m[0][0];
+    double a01 = a->m[0][1];
+    double a02 = a->m[0][2];
+    double a03 = a->m[0][3];
+    double a10 = a->m[1][0];
+    double a11 = a->m[1][1];
+    double a12 = a->m[1][2];
+    double a13 = a->m[1][3];
+    double a20 = a->m[2][0];
+    double a21 = a->m[2][1];
+    double a22 = a->m[2][2];
+    double a23 = a->m[2][3];
     span r0 = span_add(a03, l0, h0);
     span r1 = span_add(a13, l1, h1);
     span r2 = span_add(a23, l2, h2);
@@ -264,8 +290,9 @@ static int tr_ok(const cbx_affine *a)
 */
 static cbx_status kern_identity(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    if (ends_ok(in, 0x1p1018))
+    if (ends_ok(in, 0x1p1018)) {
         return fast_identity(a, in, out);
+    }
     return cbx_transform_box(a, in, out);
 }
 
@@ -279,8 +306,9 @@ static cbx_status kern_identity(const cbx_affine *a, const cbx_box *in, cbx_box 
 */
 static cbx_status kern_translate(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    if (ends_ok(in, 0x1p1018) && tr_ok(a))
+    if (ends_ok(in, 0x1p1018) && tr_ok(a)) {
         return fast_translate(a, in, out);
+    }
     return cbx_transform_box(a, in, out);
 }
 
@@ -315,23 +343,29 @@ static int off_diag_zero(const cbx_affine *a)
 */
 static int row_has_one(const cbx_affine *a, int i)
 {
-    double x = a->m[i][0], y = a->m[i][1], z = a->m[i][2];
+    double x = a->m[i][0];
+    double y = a->m[i][1];
+    double z = a->m[i][2];
     return (y == 0.0 && z == 0.0) || (x == 0.0 && z == 0.0) || (x == 0.0 && y == 0.0);
 }
 
 cbx_class cbx_classify(const cbx_affine *a)
 {
-    if (!aff_all_fin(a))
+    if (!aff_all_fin(a)) {
         return CBX_CLASS_GENERAL;
+    }
     if (off_diag_zero(a)) {
-        if (!(a->m[0][0] == 1.0 && a->m[1][1] == 1.0 && a->m[2][2] == 1.0))
+        if (!(a->m[0][0] == 1.0 && a->m[1][1] == 1.0 && a->m[2][2] == 1.0)) {
             return CBX_CLASS_SCALE;
-        if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0)
+        }
+        if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0) {
             return CBX_CLASS_IDENTITY;
+        }
         return CBX_CLASS_TRANSLATE;
     }
-    if (row_has_one(a, 0) && row_has_one(a, 1) && row_has_one(a, 2))
+    if (row_has_one(a, 0) && row_has_one(a, 1) && row_has_one(a, 2)) {
         return CBX_CLASS_PERMUTE;
+    }
     return CBX_CLASS_GENERAL;
 }
 
@@ -371,14 +405,18 @@ static int translate_holds(const cbx_affine *a)
 */
 static cbx_class class_checked(const cbx_affine *a, cbx_class cls)
 {
-    if (cls != CBX_CLASS_IDENTITY && cls != CBX_CLASS_TRANSLATE)
+    if (cls != CBX_CLASS_IDENTITY && cls != CBX_CLASS_TRANSLATE) {
         return CBX_CLASS_GENERAL;
-    if (!translate_holds(a))
+    }
+    if (!translate_holds(a)) {
         return CBX_CLASS_GENERAL;
-    if (cls == CBX_CLASS_TRANSLATE)
+    }
+    if (cls == CBX_CLASS_TRANSLATE) {
         return CBX_CLASS_TRANSLATE;
-    if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0)
+    }
+    if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0) {
         return CBX_CLASS_IDENTITY;
+    }
     return CBX_CLASS_GENERAL;
 }
 
@@ -386,11 +424,12 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls0, const cbx_b
 {
     cbx_status r;
     cbx_class cls = class_checked(a, cls0);
-    if (cls == CBX_CLASS_IDENTITY)
+    if (cls == CBX_CLASS_IDENTITY) {
         r = kern_identity(a, in, out);
-    else if (cls == CBX_CLASS_TRANSLATE)
+    } else if (cls == CBX_CLASS_TRANSLATE) {
         r = kern_translate(a, in, out);
-    else
+    } else {
         r = cbx_transform_box(a, in, out);
+    }
     return r;
 }

@@ -155,7 +155,8 @@ cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box 
 static void whole_imat(cbx_imat *out)
 {
     cbx_imat r;
-    cbx_fp n = cbx_ninf(), p = cbx_pinf();
+    cbx_fp n = cbx_ninf();
+    cbx_fp p = cbx_pinf();
     r.lo[0][0] = n; r.hi[0][0] = p; r.lo[0][1] = n; r.hi[0][1] = p;
     r.lo[0][2] = n; r.hi[0][2] = p; r.lo[0][3] = n; r.hi[0][3] = p;
     r.lo[1][0] = n; r.hi[1][0] = p; r.lo[1][1] = n; r.hi[1][1] = p;

@@ -35,8 +35,9 @@
 static cbx_dd eft_sum(double a, double b)
 {
     cbx_dd r;
-    if (a >= -0x1p1019 && a <= 0x1p1019 && b >= -0x1p1019 && b <= 0x1p1019)
+    if (a >= -0x1p1019 && a <= 0x1p1019 && b >= -0x1p1019 && b <= 0x1p1019) {
         return cbx_two_sum(a, b);
+    }
     r.hi = a;
     r.lo = b;
     return r;
@@ -73,16 +74,19 @@ static cbx_vec8 pass8(cbx_vec8 z)
 static int decide(cbx_vec8 z)
 {
     if (z.v0 == 0.0 && z.v1 == 0.0 && z.v2 == 0.0 && z.v3 == 0.0 && z.v4 == 0.0
-        && z.v5 == 0.0 && z.v6 == 0.0)
+        && z.v5 == 0.0 && z.v6 == 0.0) {
         return z.v7 >= 0.0 ? 1 : -1;
+    }
     double s = cbx_abs(z.v7);
-    if (!(s >= 0x1p-1060 && s <= 0x1p1020))
+    if (!(s >= 0x1p-1060 && s <= 0x1p1020)) {
         return 0;
+    }
     double p = cbx_mul_rn(s, 0x1p-4);
     /*@ assert pb: p <= s * 0x1p-4 + 0x1p-57 * s + 0x1p-1074; */
     if (cbx_abs(z.v0) <= p && cbx_abs(z.v1) <= p && cbx_abs(z.v2) <= p && cbx_abs(z.v3) <= p
-        && cbx_abs(z.v4) <= p && cbx_abs(z.v5) <= p && cbx_abs(z.v6) <= p)
+        && cbx_abs(z.v4) <= p && cbx_abs(z.v5) <= p && cbx_abs(z.v6) <= p) {
         return z.v7 > 0.0 ? 1 : -1;
+    }
     return 0;
 }
 
@@ -106,8 +110,9 @@ static int certify(cbx_vec8 y, double c)
     */
     for (i = 0; i < 6; i++) {
         int d = decide(z);
-        if (d != 0)
+        if (d != 0) {
             return d > 0;
+        }
         z = pass8(z);
     }
     return decide(z) > 0;
@@ -146,8 +151,9 @@ static double neighbour(double c, int dn)
 */
 static int eft_ok(double m, double v)
 {
-    if (m == 0.0 || v == 0.0)
+    if (m == 0.0 || v == 0.0) {
         return 1;
+    }
     double p = cbx_mul_rn(m, v);
     return cbx_abs(p) >= 0x1p-968;
 }
@@ -217,20 +223,26 @@ static double tighten_core(double r, cbx_vec8 y)
 {
     double best = r;
     cand f = tighten_fast(y);
-    if (f.ok != 0)
+    if (f.ok != 0) {
         return f.c > r ? f.c : r;
+    }
     double c = approx(y);
-    if (!(c >= -0x1p1017 && c <= 0x1p1017))
+    if (!(c >= -0x1p1017 && c <= 0x1p1017)) {
         return r;
+    }
     if (certify(y, c)) {
-        if (c > best) best = c;
+        if (c > best) {
+            best = c;
+        }
         double u = neighbour(c, 0);
-        if (u >= -0x1p1018 && u <= 0x1p1018 && u > best && certify(y, u))
+        if (u >= -0x1p1018 && u <= 0x1p1018 && u > best && certify(y, u)) {
             best = u;
+        }
     } else {
         double d = neighbour(c, 1);
-        if (d >= -0x1p1018 && d <= 0x1p1018 && d > best && certify(y, d))
+        if (d >= -0x1p1018 && d <= 0x1p1018 && d > best && certify(y, d)) {
             best = d;
+        }
     }
     return best;
 }
@@ -253,8 +265,9 @@ static terms exact_terms(double m0, double m1, double m2, double t,
     r.y.v0 = 0.0; r.y.v1 = 0.0; r.y.v2 = 0.0; r.y.v3 = 0.0;
     r.y.v4 = 0.0; r.y.v5 = 0.0; r.y.v6 = 0.0; r.y.v7 = 0.0;
     r.ok = 0;
-    if (!eft_ok(m0, v0) || !eft_ok(m1, v1) || !eft_ok(m2, v2))
+    if (!eft_ok(m0, v0) || !eft_ok(m1, v1) || !eft_ok(m2, v2)) {
         return r;
+    }
     cbx_dd q0 = cbx_two_prod(m0, v0);
     cbx_dd q1 = cbx_two_prod(m1, v1);
     cbx_dd q2 = cbx_two_prod(m2, v2);
@@ -281,8 +294,9 @@ static double tighten_lo(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 0);
-    if (!e.ok)
+    if (!e.ok) {
         return r;
+    }
     return tighten_core(r, e.y);
 }
 
@@ -298,8 +312,9 @@ static double tighten_hi(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 1);
-    if (!e.ok)
+    if (!e.ok) {
         return r;
+    }
     double x = tighten_core(-r, e.y);
     return -x;
 }
@@ -380,8 +395,9 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
     tight_result r;
     r.lo = lo;
     r.hi = hi;
-    if (!cbx_fin4(m0, m1, m2, t))
+    if (!cbx_fin4(m0, m1, m2, t)) {
         return r;
+    }
     if (cbx_is_fin(lo)) {
         end_result w0 = vertex_lo(m0, l0, h0);
         end_result w1 = vertex_lo(m1, l1, h1);
@@ -413,14 +429,28 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
 
 cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    double l0 = in->lo[0], l1 = in->lo[1], l2 = in->lo[2];
-    double h0 = in->hi[0], h1 = in->hi[1], h2 = in->hi[2];
-    double a00 = a->m[0][0], a01 = a->m[0][1], a02 = a->m[0][2], a03 = a->m[0][3];
-    double a10 = a->m[1][0], a11 = a->m[1][1], a12 = a->m[1][2], a13 = a->m[1][3];
-    double a20 = a->m[2][0], a21 = a->m[2][1], a22 = a->m[2][2], a23 = a->m[2][3];
+    double l0 = in->lo[0];
+    double l1 = in->lo[1];
+    double l2 = in->lo[2];
+    double h0 = in->hi[0];
+    double h1 = in->hi[1];
+    double h2 = in->hi[2];
+    double a00 = a->m[0][0];
+    double a01 = a->m[0][1];
+    double a02 = a->m[0][2];
+    double a03 = a->m[0][3];
+    double a10 = a->m[1][0];
+    double a11 = a->m[1][1];
+    double a12 = a->m[1][2];
+    double a13 = a->m[1][3];
+    double a20 = a->m[2][0];
+    double a21 = a->m[2][1];
+    double a22 = a->m[2][2];
+    double a23 = a->m[2][3];
     cbx_status st = cbx_transform_box(a, in, out);
-    if (st != CBX_OK && st != CBX_ERANGE)
+    if (st != CBX_OK && st != CBX_ERANGE) {
         return st;
+    }
     tight_result r0 = tight_axis(out->lo[0], out->hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
     tight_result r1 = tight_axis(out->lo[1], out->hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
     tight_result r2 = tight_axis(out->lo[2], out->hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
