@@ -51,7 +51,7 @@ SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
-LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c src/f64/cbx_chain.c src/algo/cbx_project.c \
+LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c src/f64/cbx_chain.c src/f64/cbx_trs.c src/algo/cbx_project.c \
            src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c src/f32/cbx_project_f.c \
            src/core/cbx_ieee.c src/f32/cbx_ieee_f.c
 HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_quot.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h specs/cbx_imat.h specs/cbx_imat_logic.h specs/cbx_plane.h specs/cbx_proj_logic.h specs/cbx_proj.h
@@ -146,7 +146,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project trs
 # Each suite with its arguments: one target per run (run-NAME, san-NAME), so
 # that make -j2 (make check) spreads the runs over both cores; -Otarget
 # keeps each run's output together.  One line per suite: its name, its
@@ -173,6 +173,7 @@ $(eval $(call suite,classes,200000 1,50000 2))
 $(eval $(call suite,float,200000 1,50000 2))
 $(eval $(call suite,plane,200000 1,40000 2))
 $(eval $(call suite,project,20000 1,4000 2))
+$(eval $(call suite,trs,100000 1,10000 2))
 $(eval $(call suite,ieee,,))
 $(eval $(call suite,scene,examples/*.scene,examples/*.scene))
 $(eval $(call suite,gltf,$(GLTFDIR) tests/data/gltf $(B)/certbox,$(GLTFDIR) tests/data/gltf $(B)/certbox))

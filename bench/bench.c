@@ -258,6 +258,12 @@ typedef struct bench_ctx {
      * boxes in front of each camera */
     cbx_proj *pm;
     cbx_box *pin;
+    /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
+     * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
+    cbx_trs *rk0, *rk1;
+    cbx_box *rin;
+    cbx_imat rpc[16];
+    size_t nrpc;
 } bench_ctx;
 
 static double urand(xu_rng *r, double lo, double hi)
@@ -443,6 +449,13 @@ CBX_KERNEL(k_sphbox, cbx_box, cbx_transform_box(&b->a[i], &unit_box, &o[i]))
 /* projective maps */
 REF_KERNEL(k_proj_ref, cbx_box, ref_proj8(&b->pm[i], &b->pin[i], &o[i]))
 CBX_KERNEL(k_proj, cbx_box, cbx_project_box(&b->pm[i], &b->pin[i], &o[i]))
+static const double t_end[2] = { 0.0, 1.0 };
+static double t_128[128];
+REF_KERNEL(k_rot_end, cbx_box, ref_trs_samples(&b->rk0[i], &b->rk1[i], 0, t_end, 2, &b->rin[i], &o[i]))
+REF_KERNEL(k_rot_128, cbx_box, ref_trs_samples(&b->rk0[i], &b->rk1[i], 0, t_128, 128, &b->rin[i], &o[i]))
+CBX_KERNEL(k_rot4, cbx_box, cbx_motion_trs_box(&b->rk0[i], &b->rk1[i], CBX_SLERP, 0.0, 1.0, 4, &b->rin[i], &o[i]))
+CBX_KERNEL(k_rot6, cbx_box, cbx_motion_trs_box(&b->rk0[i], &b->rk1[i], CBX_SLERP, 0.0, 1.0, 6, &b->rin[i], &o[i]))
+CBX_KERNEL(k_rot4p, cbx_box, cbx_transform_box_pieces(b->rpc, b->nrpc, &b->rin[i], &o[i]))
 /* throughput */
 CBX_KERNEL(k_tp, cbx_box, cbx_transform_box(&b->ta[i], &b->tin[i], &o[i]))
 REF_KERNEL(k_tp_arvo1, cbx_box, ref_arvo_box(&b->ta[0], &b->tin[i], &o[i]))
@@ -1051,7 +1064,7 @@ typedef struct sizes {
 } sizes;
 
 /* the timing groups: a baseline and the rows timed against it */
-enum { G_BOX, G_ONE, G_F, G_F1, G_P, G_TC3, G_TB3, G_TC2, G_TB2, G_S, G_SC, G_CLS, NGRP = G_CLS + 5 };
+enum { G_BOX, G_ONE, G_F, G_F1, G_P, G_R, G_TC3, G_TB3, G_TC2, G_TB2, G_S, G_SC, G_CLS, NGRP = G_CLS + 5 };
 
 static const char *const cls_row_name[5] = {
     "scene, GENERAL instances: `cbx_transform_box_as`",
@@ -1134,6 +1147,19 @@ static void define_rows(bench_ctx *b, const sizes *z)
     unsound(add_row(G_P, 1, "P-R", "projective: 8 corners divided by w, RN (pbrt, three.js)", k_proj_ref,
                     n, P, 0, bsz, MK_NONE));
     add_row(G_P, 0, "P", "projective: certbox `cbx_project_box`", k_proj, n, P, 0, bsz, MK_NONE);
+
+    /* motion with rotation (keyframes 0 to 90 degrees apart), against the
+     * union of the endpoint boxes (pbrt-style) */
+    unsound(add_row(G_R, 1, "R-E", "rotation motion: union of the 8-corner boxes at s = 0 and 1, RN (pbrt-style)",
+                    k_rot_end, n, P, 0, bsz, MK_NONE));
+    unsound(add_row(G_R, 0, "R-C", "rotation motion: 8 corners at 128 samples, RN (Cycles)", k_rot_128, n, P, 0,
+                    bsz, MK_NONE));
+    add_row(G_R, 0, "R4", "rotation motion: certbox `cbx_motion_trs_box`, slerp, 16 cells", k_rot4, n, P, 0, bsz,
+            MK_NONE)->proven = "no: tested (`test_trs`)";
+    add_row(G_R, 0, "R6", "rotation motion: certbox `cbx_motion_trs_box`, slerp, 64 cells", k_rot6, n, P, 0, bsz,
+            MK_NONE)->proven = "no: tested (`test_trs`)";
+    add_row(G_R, 0, "R4p", "rotation motion: `cbx_transform_box_pieces`, 16 cells prepared once (one motion)",
+            k_rot4p, n, P, 0, bsz, MK_NONE)->proven = "no: tested (`test_trs`)";
 
     /* throughput, against memcpy of the same bytes */
     if (z->nb > 0) {
@@ -1485,6 +1511,8 @@ static void print_summary(void)
 /* ---- inputs ---------------------------------------------------------- */
 
 /* The N cases, their cbox forms, binary32 copies and prepared maps. */
+static void gen_rot(bench_ctx *b, size_t n, uint64_t seed);
+
 static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
 {
     xu_rng rng;
@@ -1554,6 +1582,66 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
             b->pin[k].lo[i] = c - h;
             b->pin[k].hi[i] = c + h;
         }
+    }
+    gen_rot(b, n, seed);
+}
+
+/* Rotation motion: a keyframe pair per case (random orientation, a turn
+ * of 0 to 90 degrees about a random axis, translations within 10 moving
+ * by up to 2, scales 0.5 to 2 per axis, changing in half of the cases) and
+ * a box (centre within 4, half-size 2^-6 .. 2). */
+/* v: a random unit vector of R^n (rejection from the cube). */
+static void rand_dir(xu_rng *rng, double *v, int n)
+{
+    double nn;
+    int i;
+    do {
+        nn = 0;
+        for (i = 0; i < n; i++) {
+            v[i] = urand(rng, -1, 1);
+            nn += v[i] * v[i];
+        }
+    } while (nn < 0.01 || nn > 1);
+    nn = sqrt(nn);
+    for (i = 0; i < n; i++) v[i] /= nn;
+}
+
+static void gen_rot(bench_ctx *b, size_t n, uint64_t seed)
+{
+    xu_rng rng;
+    size_t k;
+    b->rk0 = xmalloc(n * sizeof *b->rk0);
+    b->rk1 = xmalloc(n * sizeof *b->rk1);
+    b->rin = xmalloc(n * sizeof *b->rin);
+    rng.s = seed + 11;
+    for (k = 0; k < 128; k++) t_128[k] = (double)k / 128.0;
+    for (k = 0; k < n; k++) {
+        double q[4], ax[3], h = urand(&rng, 0, 0.7853981633974483);
+        int i;
+        rand_dir(&rng, q, 4);
+        rand_dir(&rng, ax, 3);
+        for (i = 0; i < 4; i++) b->rk0[k].q[i] = q[i];
+        {   /* q1 = q0 * (axis sin h, cos h) */
+            double d[4] = { sin(h) * ax[0], sin(h) * ax[1], sin(h) * ax[2], cos(h) };
+            const double *a = b->rk0[k].q;
+            b->rk1[k].q[0] = a[3] * d[0] + a[0] * d[3] + a[1] * d[2] - a[2] * d[1];
+            b->rk1[k].q[1] = a[3] * d[1] - a[0] * d[2] + a[1] * d[3] + a[2] * d[0];
+            b->rk1[k].q[2] = a[3] * d[2] + a[0] * d[1] - a[1] * d[0] + a[2] * d[3];
+            b->rk1[k].q[3] = a[3] * d[3] - a[0] * d[0] - a[1] * d[1] - a[2] * d[2];
+        }
+        for (i = 0; i < 3; i++) {
+            double c = urand(&rng, -4, 4), hh = ldexp(1.0, xu_rng_int(&rng, -6, 1));
+            b->rk0[k].t[i] = urand(&rng, -10, 10);
+            b->rk1[k].t[i] = b->rk0[k].t[i] + urand(&rng, -2, 2);
+            b->rk0[k].s[i] = urand(&rng, 0.5, 2);
+            b->rk1[k].s[i] = (k & 1) ? urand(&rng, 0.5, 2) : b->rk0[k].s[i];
+            b->rin[k].lo[i] = c - hh;
+            b->rin[k].hi[i] = c + hh;
+        }
+    }
+    if (cbx_trs_pieces(&b->rk0[0], &b->rk1[0], CBX_SLERP, 0.0, 1.0, 4, b->rpc, 16, &b->nrpc) != CBX_OK) {
+        fprintf(stderr, "bench: cbx_trs_pieces failed on the first pair\n");
+        exit(1);
     }
 }
 

@@ -158,4 +158,81 @@ static inline void ref_arvo_boxf(const cbx_affinef *a, const cbx_boxf *in, cbx_b
     }
 }
 
+/* Motion with rotation as the renderers bound it (unsound): the map of a
+ * translation / rotation / scale keyframe pair at time s, rounded to
+ * nearest (q1 negated when q0.q1 < 0, both normalised; slerp with acos and
+ * sin as pbrt's AnimatedTransform::Interpolate, or nlerp when nl != 0);
+ * ref_trs_samples: the box of the 8 corners at the times ts[] (s = 0 and 1:
+ * the union of the endpoint boxes; t = k / 128, k < 128: Cycles' object
+ * motion, never t = 1).  REF_SIN / REF_ACOS may be defined before this
+ * header (tests/test_trs.c: correctly rounded, the same bits on ARM). */
+#ifndef REF_SIN
+#define REF_SIN(x) sin(x)
+#define REF_ACOS(x) acos(x)
+#endif
+static inline void ref_trs_map(const cbx_trs *k0, const cbx_trs *k1, double s, int nl, cbx_affine *m)
+{
+    double a[4], b[4], q[4], n0 = 0, n1 = 0, n = 0, d = 0, th, w0, w1, x, y, z, w;
+    double R[3][3];
+    int i, j;
+    for (i = 0; i < 4; i++) {
+        n0 += k0->q[i] * k0->q[i];
+        n1 += k1->q[i] * k1->q[i];
+    }
+    n0 = sqrt(n0);
+    n1 = sqrt(n1);
+    for (i = 0; i < 4; i++) {
+        a[i] = k0->q[i] / n0;
+        b[i] = k1->q[i] / n1;
+        d += a[i] * b[i];
+    }
+    if (d < 0) {
+        for (i = 0; i < 4; i++) b[i] = -b[i];
+        d = -d;
+    }
+    th = REF_ACOS(d > 1 ? 1 : d);
+    if (nl || th < 1e-9) {
+        w0 = 1 - s;
+        w1 = s;
+    } else {
+        w0 = REF_SIN((1 - s) * th) / REF_SIN(th);
+        w1 = REF_SIN(s * th) / REF_SIN(th);
+    }
+    for (i = 0; i < 4; i++) {
+        q[i] = w0 * a[i] + w1 * b[i];
+        n += q[i] * q[i];
+    }
+    n = sqrt(n);
+    x = q[0] / n; y = q[1] / n; z = q[2] / n; w = q[3] / n;
+    R[0][0] = 1 - 2 * (y * y + z * z); R[0][1] = 2 * (x * y - z * w); R[0][2] = 2 * (x * z + y * w);
+    R[1][0] = 2 * (x * y + z * w); R[1][1] = 1 - 2 * (x * x + z * z); R[1][2] = 2 * (y * z - x * w);
+    R[2][0] = 2 * (x * z - y * w); R[2][1] = 2 * (y * z + x * w); R[2][2] = 1 - 2 * (x * x + y * y);
+    for (i = 0; i < 3; i++) {
+        for (j = 0; j < 3; j++) m->m[i][j] = R[i][j] * ((1 - s) * k0->s[j] + s * k1->s[j]);
+        m->m[i][3] = (1 - s) * k0->t[i] + s * k1->t[i];
+    }
+}
+
+static inline void ref_trs_union(cbx_box *acc, const cbx_box *b, int first)
+{
+    int i;
+    for (i = 0; i < 3; i++) {
+        acc->lo[i] = first ? b->lo[i] : ref_min(acc->lo[i], b->lo[i]);
+        acc->hi[i] = first ? b->hi[i] : ref_max(acc->hi[i], b->hi[i]);
+    }
+}
+
+static inline void ref_trs_samples(const cbx_trs *k0, const cbx_trs *k1, int nl, const double *ts, int nt,
+                                   const cbx_box *in, cbx_box *out)
+{
+    int k;
+    for (k = 0; k < nt; k++) {
+        cbx_affine m;
+        cbx_box b;
+        ref_trs_map(k0, k1, ts[k], nl, &m);
+        ref_naive8(&m, in, &b);
+        ref_trs_union(out, &b, k == 0);
+    }
+}
+
 #endif /* BENCH_REF_H */

@@ -83,6 +83,16 @@ typedef struct cbx_projf { float m[4][4]; } cbx_projf;
  * be (cbx_transform_box_imat, cbx_imat_compose). */
 typedef struct cbx_imat { double lo[3][4], hi[3][4]; } cbx_imat;
 
+/* A keyframe of a motion (binary64): x -> t + R(q) diag(s) x, where R(q)
+ * is the rotation of the unit quaternion q / |q| (q = (x, y, z, w), glTF's
+ * order; any nonzero q) and s a scale per axis (negative flips). */
+typedef struct cbx_trs { double t[3]; double q[4]; double s[3]; } cbx_trs;
+
+/* How a motion interpolates the rotation between two keyframes: slerp (pbrt,
+ * Embree, Mitsuba) or normalised linear blend (Cycles' GPU path), both on
+ * the normalised keyframe quaternions along the shorter arc. */
+typedef enum cbx_interp { CBX_SLERP = 0, CBX_NLERP = 1 } cbx_interp;
+
 /* A map prepared once for many boxes (cbx_prepare, cbx_preparef): a copy
  * of the map, and whether it lies in the fast range (every linear entry at
  * most 2^509 in magnitude, every translation at most 2^1018; binary32:
@@ -232,8 +242,7 @@ cbx_status cbx_transform_box_as(const cbx_affine *a, cbx_class cls, const cbx_bo
  * axis is [-inf, +inf].  Status: CBX_EINVAL (NaN) and CBX_EMPTY as
  * cbx_transform_box; CBX_OK when both ends' calls would return CBX_OK and
  * no axis mixes a full row with a non-full one; CBX_ERANGE otherwise.  Not covered: rotations interpolated otherwise
- * (slerp, screw motion); bound those by sampling with a proven margin, or
- * by the box of the swept rotation, before calling this. */
+ * (slerp, screw motion): for slerp and nlerp keyframes, cbx_motion_trs_box. */
 /*@ requires valid: \valid_read(a0) && \valid_read(a1) && \valid_read(in) && \valid(out);
     requires sep: \separated(out, a0) && \separated(out, a1) && (\separated(out, in) || out == in);
     assigns *out;
@@ -364,6 +373,64 @@ cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out)
                     out->lo[2], out->hi[2]);
 */
 cbx_status cbx_transform_box_chain(const cbx_prepared *p, size_t n, const cbx_box *in, cbx_box *out);
+
+
+/* ---- motion with rotation: translation, rotation, scale keyframes -------
+ * The motion between keyframes k0 and k1 at time s in [0, 1] is the map
+ *     x -> T(s) + R(s) diag(S(s)) x,
+ * T and S interpolated linearly ((1 - s) k0 + s k1), R the rotation of
+ * slerp (or nlerp) from q0 / |q0| to q1 / |q1|, q1 negated first when the
+ * exact dot product q0.q1 is negative (the renderers' shorter arc); where
+ * the computed dot product cannot decide its sign, both arcs are covered.
+ *
+ * cbx_motion_trs_box: *out contains the image of every real point of the
+ * box under the motion at every real s in [s0, s1] (0 <= s0 <= s1 <= 1).
+ * The shutter [s0, s1] is covered by about 2^depth dyadic cells (depth
+ * <= 16; 2^depth to 2^(depth+1) + 1 of them); each contributes the box of
+ * an interval matrix enclosing every map of the cell (cbx_trs_pieces), so
+ * the excess about halves per extra level (docs/guide.md: 3.4% of the
+ * box's side at 16 cells for a 90-degree turn).  Tested against MPFR
+ * (tests/test_trs.c); its interval arithmetic has no ACSL proof yet, the
+ * box of each cell is cbx_transform_box_imat's (proven).  Status and
+ * output:
+ *   NaN in a keyframe, s0, s1 or *in; s0, s1 not 0 <= s0 <= s1 <= 1;
+ *   depth > 16; a zero quaternion      -> CBX_EINVAL, *out the whole space
+ *   a translation above 2^500, a scale above 2^250 or a quaternion
+ *   component above 2^250 in magnitude, or a quaternion whose largest
+ *   component is below 2^-120 (or any infinite entry)
+ *                                      -> CBX_ERANGE, *out the whole space
+ *   an axis of *in with no real point  -> CBX_EMPTY, *out empty
+ *   otherwise CBX_OK, or CBX_ERANGE on the axes cbx_transform_box_imat
+ *   leaves whole (an infinite box end, box ends above 2^509).
+ * out may be in itself. */
+cbx_status cbx_motion_trs_box(const cbx_trs *k0, const cbx_trs *k1, cbx_interp mode, double s0, double s1,
+                              unsigned depth, const cbx_box *in, cbx_box *out);
+
+/* cbx_motion_trs_path: the same over keyframes keys[0..n-1] at the evenly
+ * spaced times i / (n - 1) (Embree's time steps), each segment cut into
+ * 2^depth cells; n = 1 is a still keyframe, n = 0 CBX_EINVAL. */
+cbx_status cbx_motion_trs_path(const cbx_trs *keys, size_t n, cbx_interp mode, double s0, double s1,
+                               unsigned depth, const cbx_box *in, cbx_box *out);
+
+/* cbx_trs_pieces: the interval matrices of those cells, once for many
+ * boxes: pieces[k] encloses every map of the motion at every s of its cell
+ * within [s0, s1].  *count is how many were written (at most
+ * 2^(depth+1) + 1); CBX_EINVAL (and none) when more than cap are needed, with
+ * the statuses above otherwise.  cbx_transform_box_pieces: the hull of
+ * cbx_transform_box_imat over n pieces (n = 0: CBX_EINVAL, whole space),
+ * the most severe status met (CBX_EINVAL: whole space, CBX_EMPTY: empty). */
+/* cbx_motion_trs_ball: the same for the ball |x - c| <= |r| (object
+ * space): *out contains T(s) + R(s) diag(S(s)) x for every such x and
+ * every s in [s0, s1].  Statuses as cbx_motion_trs_box, with c and r
+ * (NaN: CBX_EINVAL; above 2^500 in magnitude: CBX_ERANGE) in place of the
+ * box.  cbx_ball_pieces: the same from prepared pieces (n = 0: CBX_EINVAL). */
+cbx_status cbx_motion_trs_ball(const cbx_trs *k0, const cbx_trs *k1, cbx_interp mode, double s0, double s1,
+                               unsigned depth, const double c[3], double r, cbx_box *out);
+cbx_status cbx_ball_pieces(const cbx_imat *pieces, size_t n, const double c[3], double r, cbx_box *out);
+
+cbx_status cbx_trs_pieces(const cbx_trs *k0, const cbx_trs *k1, cbx_interp mode, double s0, double s1,
+                          unsigned depth, cbx_imat *pieces, size_t cap, size_t *count);
+cbx_status cbx_transform_box_pieces(const cbx_imat *pieces, size_t n, const cbx_box *in, cbx_box *out);
 
 #endif /* binary64 only */
 

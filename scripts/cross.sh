@@ -23,7 +23,7 @@ LIB="src/*/cbx_*.c"
 # suite and arguments (host and ARM alike); sizes keep qemu under ~2 minutes
 # (NAME_nofma: tests/test_NAME.c and the library built with -DCBX_NO_FMA,
 # compared with build/test_NAME_nofma; eft: both two_prod forms, GMP)
-SUITES=${CROSS_SUITES:-"badinput: special: exact:200000,1 float:50000,1 cbox:30000,1 sphere:20000,1 alias:10000,1 halfspace:20,1 batch:20,1 tight:10,1 tight_nofma:10,1 eft:100,1 classes:20000,1 chain:200,5,1 imat:20000,5000,1"}
+SUITES=${CROSS_SUITES:-"badinput: special: exact:200000,1 float:50000,1 cbox:30000,1 sphere:20000,1 alias:10000,1 halfspace:20,1 batch:20,1 tight:10,1 tight_nofma:10,1 eft:100,1 classes:20000,1 chain:200,5,1 imat:20000,5000,1 trs:2000,1"}
 pass=0; fail=0
 echo "cross: $($XCC --version | head -1); $($QEMU --version | head -1)"
 start=$(date +%s)

@@ -44,7 +44,8 @@ FLAGS = ['-std=c99', '-Wall', '-Wextra', '-Wpedantic', '-Werror', '-ffp-contract
         ] + ['-I' + os.path.join(ROOT, d[2:]) for d in INCS]
 PUBLIC = ['cbx_transform_box', 'cbx_transform_boxes', 'cbx_transform_cbox', 'cbx_box_to_cbox',
           'cbx_cbox_to_box', 'cbx_sphere_box', 'cbx_ellipsoid_box']
-PUBLIC64 = ['cbx_transform_box_tight', 'cbx_classify', 'cbx_transform_box_as', 'cbx_motion_box']
+PUBLIC64 = ['cbx_transform_box_tight', 'cbx_classify', 'cbx_transform_box_as', 'cbx_motion_box',
+            'cbx_motion_trs_box', 'cbx_transform_box_pieces']
 ALLOWED = re.compile(r'^(__aeabi_\w+|sqrt|sqrtf)$')
 # The binary64 tight mode's two_prod (src/core/cbx_eft.h) is an fma where the
 # target has the instruction (M7: vfma.f64) or glibc's, else Dekker's
