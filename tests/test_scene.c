@@ -3,7 +3,8 @@
  *   test_scene FILE...
  * For every leaf of every scene: the exact product (mpq) of the given
  * double matrices from the leaf's node to the root, at several times s for
- * motion nodes (the same s everywhere, and independent s per node), maps
+ * motion nodes (the same s everywhere, and independent s per node; a
+ * keyframes node's slerp in MPFR at 300 bits, as a rational), maps
  *   - every corner of a box leaf inside the world box;
  *   - a sphere or ellipsoid leaf to c' + A p, |p| <= 1, whose exact extent
  *     c'_i -+ sqrt(sum_j A_ij^2) must lie inside the world box (checked
@@ -14,6 +15,7 @@
  * Exit 1 on any failure.
  */
 #include <gmp.h>
+#include <mpfr.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -181,6 +183,111 @@ static void check_leaf(const sc_leaf *L, const qmap *W, stats *st, const char *f
     mpq_clears(v, t, lo, hi, d, sum, NULL);
 }
 
+/* A keyframes node's map at time tm: T(tm) + R(tm) diag(S(tm)), T and S
+ * exact; R from slerp (or nlerp) of the normalised quaternions, q1 negated
+ * when the exact q0.q1 < 0, evaluated with MPFR at 300 bits and taken as
+ * the rational of that value (within 2^-290 of the real rotation: far
+ * below any rounding the tool's bound must cover). */
+static void trs_map(const cbx_trs *k0, const cbx_trs *k1, int nlerp, const mpq_t tm, qmap *out)
+{
+    mpfr_t a[4], b[4], q[4], d, th, w0, w1, n, t, x;
+    mpq_t dq, pq, one_m, sq, tq;
+    int i, j;
+    mpfr_inits2(300, d, th, w0, w1, n, t, x, (mpfr_ptr)0);
+    for (i = 0; i < 4; i++) mpfr_inits2(300, a[i], b[i], q[i], (mpfr_ptr)0);
+    mpq_inits(dq, pq, one_m, sq, tq, NULL);
+    /* the exact sign of q0.q1 */
+    for (i = 0; i < 4; i++) {
+        mpq_set_d(pq, k0->q[i]);
+        mpq_set_d(tq, k1->q[i]);
+        mpq_mul(pq, pq, tq);
+        mpq_add(dq, dq, pq);
+    }
+    for (int k = 0; k < 2; k++) {
+        const cbx_trs *K = k ? k1 : k0;
+        mpfr_set_ui(n, 0, MPFR_RNDN);
+        for (i = 0; i < 4; i++) {
+            mpfr_set_d(k ? b[i] : a[i], K->q[i], MPFR_RNDN);
+            mpfr_fma(n, k ? b[i] : a[i], k ? b[i] : a[i], n, MPFR_RNDN);
+        }
+        mpfr_sqrt(n, n, MPFR_RNDN);
+        for (i = 0; i < 4; i++) {
+            if (k) mpfr_div(b[i], b[i], n, MPFR_RNDN);
+            else mpfr_div(a[i], a[i], n, MPFR_RNDN);
+        }
+    }
+    if (mpq_sgn(dq) < 0)
+        for (i = 0; i < 4; i++) mpfr_neg(b[i], b[i], MPFR_RNDN);
+    mpfr_set_ui(d, 0, MPFR_RNDN);
+    for (i = 0; i < 4; i++) mpfr_fma(d, a[i], b[i], d, MPFR_RNDN);
+    if (mpfr_cmp_ui(d, 1) > 0) mpfr_set_ui(d, 1, MPFR_RNDN);
+    mpfr_acos(th, d, MPFR_RNDN);
+    mpfr_set_q(t, tm, MPFR_RNDN);
+    mpfr_ui_sub(w0, 1, t, MPFR_RNDN);
+    mpfr_set(w1, t, MPFR_RNDN);
+    if (!nlerp && mpfr_cmp_d(th, 0x1p-200) > 0) {
+        mpfr_sin(x, th, MPFR_RNDN);
+        mpfr_mul(w0, w0, th, MPFR_RNDN);
+        mpfr_sin(w0, w0, MPFR_RNDN);
+        mpfr_div(w0, w0, x, MPFR_RNDN);
+        mpfr_mul(w1, t, th, MPFR_RNDN);
+        mpfr_sin(w1, w1, MPFR_RNDN);
+        mpfr_div(w1, w1, x, MPFR_RNDN);
+    }
+    mpfr_set_ui(n, 0, MPFR_RNDN);
+    for (i = 0; i < 4; i++) {
+        mpfr_mul(q[i], a[i], w0, MPFR_RNDN);
+        mpfr_fma(q[i], b[i], w1, q[i], MPFR_RNDN);
+        mpfr_fma(n, q[i], q[i], n, MPFR_RNDN);
+    }
+    mpfr_sqrt(n, n, MPFR_RNDN);
+    for (i = 0; i < 4; i++) mpfr_div(q[i], q[i], n, MPFR_RNDN);
+    /* R (unit quaternion (x, y, z, w)), then the columns scaled by S */
+    {
+        static const int sq_a[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+        /* off-diagonal: 2 (q_u q_v + sign q_w q_z) */
+        static const int off[3][3][4] = {
+            {{0, 0, 0, 0}, {0, 1, 2, -1}, {0, 2, 1, 1}},
+            {{0, 1, 2, 1}, {0, 0, 0, 0}, {1, 2, 0, -1}},
+            {{0, 2, 1, -1}, {1, 2, 0, 1}, {0, 0, 0, 0}}};
+        mpq_set_ui(one_m, 1, 1);
+        mpq_sub(one_m, one_m, tm);
+        for (i = 0; i < 3; i++) {
+            for (j = 0; j < 3; j++) {
+                if (i == j) {
+                    mpfr_sqr(x, q[sq_a[i][0]], MPFR_RNDN);
+                    mpfr_fma(x, q[sq_a[i][1]], q[sq_a[i][1]], x, MPFR_RNDN);
+                    mpfr_mul_2ui(x, x, 1, MPFR_RNDN);
+                    mpfr_ui_sub(x, 1, x, MPFR_RNDN);
+                } else {
+                    const int *o = off[i][j];
+                    mpfr_mul(x, q[o[0]], q[o[1]], MPFR_RNDN);
+                    mpfr_mul(d, q[o[2]], q[3], MPFR_RNDN);
+                    if (o[3] > 0) mpfr_add(x, x, d, MPFR_RNDN);
+                    else mpfr_sub(x, x, d, MPFR_RNDN);
+                    mpfr_mul_2ui(x, x, 1, MPFR_RNDN);
+                }
+                mpfr_get_q(out->m[i][j], x);
+                /* times S_j(tm) = (1 - tm) s0 + tm s1 */
+                mpq_set_d(sq, k0->s[j]);
+                mpq_mul(sq, sq, one_m);
+                mpq_set_d(tq, k1->s[j]);
+                mpq_mul(tq, tq, tm);
+                mpq_add(sq, sq, tq);
+                mpq_mul(out->m[i][j], out->m[i][j], sq);
+            }
+            mpq_set_d(sq, k0->t[i]);
+            mpq_mul(sq, sq, one_m);
+            mpq_set_d(tq, k1->t[i]);
+            mpq_mul(tq, tq, tm);
+            mpq_add(out->m[i][3], sq, tq);
+        }
+    }
+    mpq_clears(dq, pq, one_m, sq, tq, NULL);
+    for (i = 0; i < 4; i++) mpfr_clears(a[i], b[i], q[i], (mpfr_ptr)0);
+    mpfr_clears(d, th, w0, w1, n, t, x, (mpfr_ptr)0);
+}
+
 /* The exact map of node n (its operations composed, motion at time s). */
 static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
 {
@@ -188,7 +295,9 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
     qmap a, r;
     qm_init(&a);
     qm_init(&r);
-    if (N->motion) {
+    if (N->trs) {
+        trs_map(&s->keys[N->trs - 1], &s->keys[N->trs], N->nlerp, tm, out);
+    } else if (N->motion) {
         qm_from(out, &s->ops[N->first].a, &s->ops[N->first + 1].a, tm);
     } else {
         mpq_t zero;
@@ -338,6 +447,19 @@ static void gen_deep(xu_rng *r, sbuf *b, int nn, int nl, int pm, int pb)
         if (i == 0) sb_add(b, "node n0\n");
         else sb_add(b, "node n%d n%d\n", i, xu_rng_int(r, 0, 99) >= pb ? i - 1 : xu_rng_int(r, 0, i - 1));
         int motion = xu_rng_int(r, 0, 99) < pm, nops = motion ? 2 : xu_rng_int(r, 0, 3);
+        if (motion && xu_rng_int(r, 0, 2) == 0) {
+            /* a third of the motion nodes: keyframes (any turn, scale near 1) */
+            sb_add(b, "  keyframes");
+            for (int k = 0; k < 2; k++) {
+                sb_add(b, "  %.17g %.17g %d ", 2 * xu_rng_unit(r) - 1, 0.5 * xu_rng_unit(r), xu_rng_int(r, -1, 1));
+                sb_add(b, " %.17g %.17g %.17g %.17g ", xu_rng_unit(r) - 0.5, xu_rng_unit(r) - 0.5,
+                       xu_rng_unit(r) - 0.5, xu_rng_unit(r) - 0.5 + 0.01);
+                sb_add(b, " %.17g %.17g %.17g", 0.95 + 0.1 * xu_rng_unit(r), 0.95 + 0.1 * xu_rng_unit(r),
+                       xu_rng_sign(r) * (0.95 + 0.1 * xu_rng_unit(r)));
+            }
+            sb_add(b, "%s\n", xu_rng_int(r, 0, 3) == 0 ? " nlerp" : "");
+            nops = 0;
+        }
         for (int q = 0; q < nops; q++) {
             if (motion && q == 1) sb_add(b, "  motion\n");
             switch (xu_rng_int(r, 0, 5)) {
@@ -443,7 +565,12 @@ static void ref_eval(const scene *s, cbx_box *out)
         }
         for (int n = L->node; n >= 0; n = s->nodes[n].parent) {
             const sc_node *N = &s->nodes[n];
-            if (N->motion) {
+            if (N->trs) {
+                cbx_box o;
+                (void)cbx_motion_trs_box(&s->keys[N->trs - 1], &s->keys[N->trs], N->nlerp ? CBX_NLERP : CBX_SLERP,
+                                         0.0, 1.0, SC_TRS_DEPTH, &b, &o);
+                b = o;
+            } else if (N->motion) {
                 cbx_box o;
                 (void)cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, &b, &o);
                 b = o;
@@ -610,6 +737,11 @@ static int check_errors(int *count)
         {"certbox-scene 1\nnode a\n  rotate 1 0 0 1e15\nbox b a 0 0 0 1 1 1\n", 3},
         {"certbox-scene 1\nnode a\n  translate 1 0 0\n  translate 1 0 0\n  motion\n  translate 2 0 0\nbox b a 0 0 0 1 1 1\n", 2},
         {"certbox-scene 1\nnode a\n  motion\n  motion\nbox b a 0 0 0 1 1 1\n", 4},
+        {"certbox-scene 1\nnode a\n  translate 1 0 0\n  keyframes 0 0 0 0 0 0 1 1 1 1 0 0 0 0 0 0 1 1 1 1\n", 4},
+        {"certbox-scene 1\nnode a\n  keyframes 0 0 0 0 0 0 1 1 1 1 0 0 0 0 0 0 1 1 1 1\n  scale 2 2 2\n", 4},
+        {"certbox-scene 1\nnode a\n  keyframes 0 0 0 0 0 0 0 1 1 1 0 0 0 0 0 0 1 1 1 1\n", 3},
+        {"certbox-scene 1\nnode a\n  keyframes 0 0 0 0 0 0 1 1 1 1 0 0 0 0 0 0 1 1 1 1 cubic\n", 3},
+        {"certbox-scene 1\nnode a\n  keyframes 0 0 0 0 0 0 1 1 1 1 0 0 0 0 0 0 1 1 1 1\n  motion\n", 4},
         {"certbox-scene 1\ntranslate 1 0 0\n", 2},
         {"certbox-scene 1\nnode a\nbox b a 0 0 0 1 1 1\n  translate 1 0 0\n", 4},
         {"certbox-scene 1\nnode a\nfrobnicate\n", 3},

@@ -48,6 +48,7 @@ void scene_free(scene *s)
     free(s->nodes);
     free(s->ops);
     free(s->leaves);
+    free(s->keys);
     free(s->hash);
     memset(s, 0, sizeof *s);
 }
@@ -226,6 +227,8 @@ static int add_op(parser *p, const cbx_affine *a)
     scene *s = p->s;
     if (p->cur < 0)
         return fail(p, "operation outside a node (declare `node NAME [PARENT]` first)");
+    if (s->nodes[p->cur].trs)
+        return fail(p, "node '%s' has keyframes: it takes no other operation", s->nodes[p->cur].name);
     if (s->no >= SC_COUNT_MAX)
         return fail(p, "more than %d operations", SC_COUNT_MAX);
     if (grow((void **)&s->ops, &s->capo, s->no + 1, sizeof *s->ops) != 0)
@@ -240,7 +243,7 @@ static int add_op(parser *p, const cbx_affine *a)
 /* Close the current node: a motion node needs one operation per side. */
 static int close_node(parser *p)
 {
-    if (p->cur >= 0 && p->s->nodes[p->cur].motion && (p->n0 != 1 || p->n1 != 1)) {
+    if (p->cur >= 0 && p->s->nodes[p->cur].motion && !p->s->nodes[p->cur].trs && (p->n0 != 1 || p->n1 != 1)) {
         int saved = p->line;
         p->line = p->s->nodes[p->cur].line;
         fail(p, "motion node '%s' needs exactly one operation before and one after "
@@ -331,10 +334,48 @@ static int statement(parser *p, char **tok, int nt)
             return fail(p, "usage: motion");
         if (p->cur < 0)
             return fail(p, "motion outside a node");
+        if (s->nodes[p->cur].trs)
+            return fail(p, "node '%s' has keyframes: it takes no `motion`", s->nodes[p->cur].name);
         if (s->nodes[p->cur].motion)
             return fail(p, "second `motion` in node '%s'", s->nodes[p->cur].name);
         s->nodes[p->cur].motion = 1;
         p->side = 1;
+        return 0;
+    }
+    if (strcmp(w, "keyframes") == 0) {
+        double v[20];
+        int nl = 0;
+        if (nt == 22 && strcmp(tok[21], "nlerp") == 0)
+            nl = 1;
+        else if (!(nt == 21 || (nt == 22 && strcmp(tok[21], "slerp") == 0)))
+            return fail(p, "usage: keyframes TX TY TZ QX QY QZ QW SX SY SZ TX TY TZ QX QY QZ QW SX SY SZ [slerp|nlerp]");
+        if (p->cur < 0)
+            return fail(p, "keyframes outside a node");
+        sc_node *N = &s->nodes[p->cur];
+        if (N->n > 0 || N->motion)
+            return fail(p, "node '%s': keyframes must be its only operation", N->name);
+        if (parse_nums(p, tok + 1, 20, v) != 0)
+            return -1;
+        for (int k = 0; k < 2; k++)
+            if (v[10 * k + 3] == 0.0 && v[10 * k + 4] == 0.0 && v[10 * k + 5] == 0.0 && v[10 * k + 6] == 0.0)
+                return fail(p, "keyframe %d of node '%s': the quaternion is zero", k, N->name);
+        if (s->nk > SC_COUNT_MAX)
+            return fail(p, "more than %d keyframes nodes", SC_COUNT_MAX / 2);
+        if (grow((void **)&s->keys, &s->capk, s->nk + 2, sizeof *s->keys) != 0)
+            return fail(p, "out of memory");
+        for (int k = 0; k < 2; k++) {
+            cbx_trs *K = &s->keys[s->nk + k];
+            for (int i = 0; i < 3; i++) {
+                K->t[i] = v[10 * k + i];
+                K->s[i] = v[10 * k + 7 + i];
+            }
+            for (int i = 0; i < 4; i++)
+                K->q[i] = v[10 * k + 3 + i];
+        }
+        N->trs = s->nk + 1;
+        N->nlerp = nl;
+        N->motion = 1;
+        s->nk += 2;
         return 0;
     }
     if (strcmp(w, "box") == 0 || strcmp(w, "sphere") == 0 || strcmp(w, "ellipsoid") == 0) {
@@ -619,6 +660,29 @@ static void imap_hull(const cbx_affine *a0, const cbx_affine *a1, sc_imap *r)
         }
 }
 
+/* A keyframes node's operation over the whole shutter: the hull of
+ * cbx_trs_pieces' interval matrices (each holds every map of its cell).
+ * Returns 1 when the pieces are not all in range (then r is unused). */
+static int trs_hull(const scene *s, const sc_node *N, sc_imap *r)
+{
+    cbx_imat pc[(2U << SC_TRS_DEPTH) + 1U];
+    size_t np = 0;
+    cbx_status st = cbx_trs_pieces(&s->keys[N->trs - 1], &s->keys[N->trs], N->nlerp ? CBX_NLERP : CBX_SLERP,
+                                   0.0, 1.0, SC_TRS_DEPTH, pc, sizeof pc / sizeof pc[0], &np);
+    if (st != CBX_OK || np == 0)
+        return 1;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            r->lo[i][j] = pc[0].lo[i][j];
+            r->hi[i][j] = pc[0].hi[i][j];
+            for (size_t k = 1; k < np; k++) {
+                r->lo[i][j] = fmin(r->lo[i][j], pc[k].lo[i][j]);
+                r->hi[i][j] = fmax(r->hi[i][j], pc[k].hi[i][j]);
+            }
+        }
+    return 0;
+}
+
 /* The segment and world maps (see above), parents first. */
 typedef struct sc_maps {
     sc_imap *S, *F;         /* S[n] for every node; F[fidx[n]] for motion nodes */
@@ -683,7 +747,10 @@ static int maps_build(const scene *s, sc_maps *m)
                 int f = m->fidx[m->mot[p]];
                 bad = m->fbad[f] || m->sbad[p] || imap_compose(&m->F[f], &m->S[p], &cur) != 0;
             }
-            imap_hull(&s->ops[N->first].a, &s->ops[N->first + 1].a, &o);
+            if (N->trs)
+                bad |= trs_hull(s, N, &o);
+            else
+                imap_hull(&s->ops[N->first].a, &s->ops[N->first + 1].a, &o);
             if (bad)
                 identity_map(&r);       /* marked bad below: never read as a map */
             else
@@ -734,7 +801,12 @@ static int walk_cost(const sc_node *N)
 static cbx_status node_box(const scene *s, const sc_node *N, cbx_box *b)
 {
     cbx_status st = CBX_OK;
-    if (N->motion) {
+    if (N->trs) {
+        cbx_box o;
+        worse(&st, cbx_motion_trs_box(&s->keys[N->trs - 1], &s->keys[N->trs], N->nlerp ? CBX_NLERP : CBX_SLERP,
+                                      0.0, 1.0, SC_TRS_DEPTH, b, &o));
+        *b = o;
+    } else if (N->motion) {
         cbx_box o;
         worse(&st, cbx_motion_box(&s->ops[N->first].a, &s->ops[N->first + 1].a, b, &o));
         *b = o;

@@ -26,11 +26,17 @@ typedef cbx_prepared sc_op;
 /* A node: parent (-1 for a root), its operations ops[first .. first+n-1]
  * in file order (O1 .. On: p_parent = O1(O2(...On(p)))); a motion node
  * has exactly one operation per side: ops[first] at s = 0 and
- * ops[first + 1] at s = 1. */
+ * ops[first + 1] at s = 1, or (trs > 0) no operation and the keyframes
+ * keys[trs - 1] (s = 0) and keys[trs] (s = 1), interpolated by slerp
+ * (nlerp != 0: nlerp). */
 typedef struct sc_node {
     char name[SC_NAME_MAX];
-    int parent, first, n, motion, line;
+    int parent, first, n, motion, line, trs, nlerp;
 } sc_node;
+
+/* The cells of a keyframes node's shutter (cbx_motion_trs_box's depth):
+ * 2^5 = 32, about 2.4% of the box's side for turns of 45 to 180 degrees. */
+#define SC_TRS_DEPTH 5U
 
 /* A leaf: box v[0..5] = lo, hi; sphere v[0..3] = center, radius;
  * ellipsoid v[0..2] center, v[3..5] radii, v[6..14] orientation (row-major). */
@@ -46,6 +52,7 @@ typedef struct scene {
     sc_node *nodes; int nn, capn;
     sc_op *ops; int no, capo;
     sc_leaf *leaves; int nl, capl;
+    cbx_trs *keys; int nk, capk;  /* the keyframes of keyframes nodes, two each */
     int *hash; int hcap;          /* name lookup: index+1 of node (>0) or -(leaf+1) */
     cbx_box world;                /* union of the leaves' world boxes */
     cbx_status st;                /* most severe leaf status */
