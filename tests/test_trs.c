@@ -7,8 +7,8 @@
  * The exact motion (certbox.h): at time s, x -> T(s) + R(s) diag(S(s)) x
  * with T, S = (1 - s) k0 + s k1 and R the rotation of the unit quaternion
  * slerp(s) (or nlerp(s)) from q0/|q0| to q1/|q1|, q1 negated when the exact
- * q0.q1 < 0 (decided here exactly: the products of doubles are exact at 256
- * bits).  slerp(s) = (sin((1-s) th) q0 + sin(s th) q1) / sin th with
+ * q0.q1 < 0 (decided here exactly: the products of doubles and their sum
+ * are exact at 2400 bits).  slerp(s) = (sin((1-s) th) q0 + sin(s th) q1) / sin th with
  * cos th = q0.q1 (q0 when th < 2^-200), nlerp(s) the normalised blend.
  *
  * Cases: rotations between the keyframes of 0, 1e-9, 1e-4, 45, 90, 179.9,
