@@ -47,6 +47,7 @@ GLTFDIR=/usr/share/assimp/models/glTF2
 GLTF_SEEDS="tests/data/gltf/cube.glb tests/data/gltf/trs.gltf tests/data/gltf/matrix.gltf
  tests/data/gltf/sparse.gltf tests/data/gltf/quantized.gltf tests/data/gltf/interleaved.gltf
  tests/data/gltf/two_scenes.gltf tests/data/gltf/overflow.gltf tests/data/gltf/nan_inf.gltf
+ tests/data/gltf/anim_rot.gltf tests/data/gltf/anim_two.gltf
  tests/data/gltf/claims.gltf tests/data/gltf/cycle.gltf tests/data/gltf/glb_nobin.glb
  $GLTFDIR/BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb
  $GLTFDIR/BoxBadNormals-glTF-Binary/BoxBadNormals.glb

@@ -22,28 +22,21 @@ void gx_clear(gx_map *q)
             mpq_clear(q->m[i][j]);
 }
 
-/* The node's exact local map from the numbers the reader kept. */
-void gx_local(gx_map *L, const gl_node *g)
+/* T R(q)/|q|^2 diag(S), exactly (q not zero) */
+void gx_trs(gx_map *L, mpq_t T[3], mpq_t q[4], mpq_t S[3])
 {
-    if (g->has_matrix) {
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 4; j++)
-                mpq_set_d(L->m[i][j], g->matrix[4 * j + i]);
-        return;
-    }
-    mpq_t x, y, z, w, n, t, u, R[3][3];
-    mpq_inits(x, y, z, w, n, t, u, NULL);
-    mpq_set_d(x, g->r[0]); mpq_set_d(y, g->r[1]); mpq_set_d(z, g->r[2]); mpq_set_d(w, g->r[3]);
-    mpq_t *q[4] = {&x, &y, &z, &w};
+    mpq_t n, t, u, R[3][3];
+    mpq_inits(n, t, u, NULL);
+    mpq_t *x = &q[0], *y = &q[1], *z = &q[2], *w = &q[3];
     mpq_set_ui(n, 0, 1);
-    for (int k = 0; k < 4; k++) { mpq_mul(t, *q[k], *q[k]); mpq_add(n, n, t); }
+    for (int k = 0; k < 4; k++) { mpq_mul(t, q[k], q[k]); mpq_add(n, n, t); }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             mpq_init(R[i][j]);
     /* diagonal: w^2 + a^2 - b^2 - c^2 for axis a */
-    mpq_t *ax[3] = {&x, &y, &z};
+    mpq_t *ax[3] = {x, y, z};
     for (int i = 0; i < 3; i++) {
-        mpq_mul(t, w, w);
+        mpq_mul(t, *w, *w);
         for (int k = 0; k < 3; k++) {
             mpq_mul(u, *ax[k], *ax[k]);
             if (k == i) mpq_add(t, t, u); else mpq_sub(t, t, u);
@@ -55,7 +48,7 @@ void gx_local(gx_map *L, const gl_node *g)
     for (int k = 0; k < 3; k++) {
         int a = pa[k][0], b = pa[k][1], c = pa[k][2];   /* (a, b) with c the third */
         mpq_mul(t, *ax[a], *ax[b]);
-        mpq_mul(u, w, *ax[c]);
+        mpq_mul(u, *w, *ax[c]);
         mpq_sub(R[a][b], t, u);
         mpq_add(R[b][a], t, u);
         mpq_add(R[a][b], R[a][b], R[a][b]);
@@ -64,15 +57,34 @@ void gx_local(gx_map *L, const gl_node *g)
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++) {
             mpq_div(t, R[i][j], n);
-            mpq_set_d(u, g->s[j]);
-            mpq_mul(L->m[i][j], t, u);
+            mpq_mul(L->m[i][j], t, S[j]);
         }
-        mpq_set_d(L->m[i][3], g->t[i]);
+        mpq_set(L->m[i][3], T[i]);
     }
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             mpq_clear(R[i][j]);
-    mpq_clears(x, y, z, w, n, t, u, NULL);
+    mpq_clears(n, t, u, NULL);
+}
+
+/* The node's exact local map from the numbers the reader kept. */
+void gx_local(gx_map *L, const gl_node *g)
+{
+    if (g->has_matrix) {
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 4; j++)
+                mpq_set_d(L->m[i][j], g->matrix[4 * j + i]);
+        return;
+    }
+    mpq_t T[3], q[4], S[3];
+    for (int k = 0; k < 4; k++) { mpq_init(q[k]); mpq_set_d(q[k], g->r[k]); }
+    for (int k = 0; k < 3; k++) {
+        mpq_init(T[k]); mpq_set_d(T[k], g->t[k]);
+        mpq_init(S[k]); mpq_set_d(S[k], g->s[k]);
+    }
+    gx_trs(L, T, q, S);
+    for (int k = 0; k < 4; k++) mpq_clear(q[k]);
+    for (int k = 0; k < 3; k++) { mpq_clear(T[k]); mpq_clear(S[k]); }
 }
 
 /* r = a o b (b first) */

@@ -26,6 +26,8 @@ typedef void (*gx_report_fn)(const char *fmt, ...);
 
 void gx_init(gx_map *q);
 void gx_clear(gx_map *q);
+/* T R(q)/|q|^2 diag(S), exactly (q not zero) */
+void gx_trs(gx_map *L, mpq_t T[3], mpq_t q[4], mpq_t S[3]);
 /* The node's exact local map from the numbers the reader kept. */
 void gx_local(gx_map *L, const gl_node *g);
 /* r = a o b (b first) */

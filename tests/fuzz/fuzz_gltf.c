@@ -8,7 +8,10 @@
  * nothing else: a relative buffer `uri` can only name the input itself
  * (read as its own .bin, deterministic) or fail; absolute paths, `..`,
  * schemes and symbolic links out of the folder are refused by the reader.
- * Every input is loaded twice: boxes from min/max, then --from-vertices.
+ * Every input is loaded three times: boxes from min/max, then
+ * --from-vertices, then min/max with --animated (2 cells per key
+ * interval: its boxes hold the static pose too, so the same oracle
+ * applies; the animated poses are test_gltf's).
  *
  * Oracle (abort() on failure, the input in the crash reproducer):
  *   - the reader returns 0 or -1; on -1 the error is a non-empty line
@@ -53,7 +56,7 @@ static void fail(const char *fmt, ...)
     va_start(ap, fmt);
     vfprintf(stderr, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "\n---- input (%zu bytes, %s boxes):\n", NIN, FROMV ? "--from-vertices" : "min/max");
+    fprintf(stderr, "\n---- input (%zu bytes, %s boxes):\n", NIN, FROMV == 1 ? "--from-vertices" : FROMV ? "--animated" : "min/max");
     fwrite(IN, 1, NIN < 2000 ? NIN : 2000, stderr);
     fprintf(stderr, "\n====\n");
     fflush(stderr);
@@ -94,7 +97,7 @@ static void check(const gl_doc *d)
         for (int i = 0; i < 3; i++)
             if (isnan(L->world.lo[i]) || isnan(L->world.hi[i]) || L->world.lo[i] > L->world.hi[i])
                 fail("leaf %s: axis %d is [%a, %a]", L->path, i, L->world.lo[i], L->world.hi[i]);
-        gx_check_leaf(d, L, &L->world, gx_world(d, W, L->node), !FROMV, !FROMV, &cnt, "input", report,
+        gx_check_leaf(d, L, &L->world, gx_world(d, W, L->node), FROMV != 1, FROMV != 1, &cnt, "input", report,
                       hlo, hhi, &nh);
         const gl_scene *G = &d->scenes[L->scene];
         for (int i = 0; i < 3; i++)
@@ -128,11 +131,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     NIN = size;
     FILE *f = fopen(path, "wb");
     if (!f || fwrite(data, 1, size, f) != size || fclose(f) != 0) { perror(path); abort(); }
-    for (FROMV = 0; FROMV < 2; FROMV++) {
+    for (FROMV = 0; FROMV < 3; FROMV++) {
         gl_doc d;
         char err[700];
         err[0] = '\0';
-        int rc = gltf_load(&d, path, FROMV, NULL, err, sizeof err);
+        unsigned opts = FROMV == 1 ? GLTF_FROM_VERTICES : FROMV ? GLTF_ANIMATED | GLTF_CELLS(2) : 0u;
+        int rc = gltf_load(&d, path, opts, NULL, err, sizeof err);
         if (rc != 0) {
             if (rc != -1) fail("gltf_load returned %d", rc);
             if (strncmp(err, path, strlen(path)) != 0 || err[strlen(path)] != ':' || strchr(err, '\n'))

@@ -200,12 +200,34 @@ static iv iv_div(iv a, iv n)
     return hull4(p);
 }
 
-static iv iv_sq(double x)
+/* x^2 for an interval x (>= 0) */
+static iv iv_sqi(iv x)
 {
-    iv r = mul_enc(x, x);
+    iv r = iv_mul(x, x);
     if (r.lo < 0) r.lo = 0.0;                     /* a square is >= 0 */
     return r;
 }
+
+/* The rotation of q = (x, y, z, w) times |q|^2 (the unit formula, homogeneous
+ * form), and |q|^2, for q in the box Q, in intervals. */
+static void unit_formula(const iv Q[4], iv R[3][3], iv *n)
+{
+    iv x = Q[0], y = Q[1], z = Q[2], w = Q[3];
+    iv xx = iv_sqi(x), yy = iv_sqi(y), zz = iv_sqi(z), ww = iv_sqi(w);
+    *n = iv_add(iv_add(xx, yy), iv_add(zz, ww));
+    iv xy = iv_mul(x, y), xz = iv_mul(x, z), yz = iv_mul(y, z);
+    iv wx = iv_mul(w, x), wy = iv_mul(w, y), wz = iv_mul(w, z), two = pt(2.0);
+    R[0][0] = iv_add(iv_add(ww, xx), iv_neg(iv_add(yy, zz)));
+    R[1][1] = iv_add(iv_add(ww, yy), iv_neg(iv_add(xx, zz)));
+    R[2][2] = iv_add(iv_add(ww, zz), iv_neg(iv_add(xx, yy)));
+    R[0][1] = iv_mul(two, iv_add(xy, iv_neg(wz)));
+    R[1][0] = iv_mul(two, iv_add(xy, wz));
+    R[0][2] = iv_mul(two, iv_add(xz, wy));
+    R[2][0] = iv_mul(two, iv_add(xz, iv_neg(wy)));
+    R[1][2] = iv_mul(two, iv_add(yz, iv_neg(wx)));
+    R[2][1] = iv_mul(two, iv_add(yz, wx));
+}
+
 
 static void setm(gl_imat *m, int i, int j, iv v) { m->lo[i][j] = v.lo; m->hi[i][j] = v.hi; }
 
@@ -228,21 +250,8 @@ static int trs_local(const double t[3], const double q0[4], const double s[3], g
         if (ldexp(q[k], e) != q0[k])
             return -1;                             /* not exact */
     }
-    double x = q[0], y = q[1], z = q[2], w = q[3];
-    iv xx = iv_sq(x), yy = iv_sq(y), zz = iv_sq(z), ww = iv_sq(w);
-    iv n = iv_add(iv_add(xx, yy), iv_add(zz, ww));
-    iv xy = mul_enc(x, y), xz = mul_enc(x, z), yz = mul_enc(y, z);
-    iv wx = mul_enc(w, x), wy = mul_enc(w, y), wz = mul_enc(w, z);
-    iv two = pt(2.0), R[3][3];
-    R[0][0] = iv_add(iv_add(ww, xx), iv_neg(iv_add(yy, zz)));
-    R[1][1] = iv_add(iv_add(ww, yy), iv_neg(iv_add(xx, zz)));
-    R[2][2] = iv_add(iv_add(ww, zz), iv_neg(iv_add(xx, yy)));
-    R[0][1] = iv_mul(two, iv_add(xy, iv_neg(wz)));
-    R[1][0] = iv_mul(two, iv_add(xy, wz));
-    R[0][2] = iv_mul(two, iv_add(xz, wy));
-    R[2][0] = iv_mul(two, iv_add(xz, iv_neg(wy)));
-    R[1][2] = iv_mul(two, iv_add(yz, iv_neg(wx)));
-    R[2][1] = iv_mul(two, iv_add(yz, wx));
+    iv Q[4] = { pt(q[0]), pt(q[1]), pt(q[2]), pt(q[3]) }, R[3][3], n;
+    unit_formula(Q, R, &n);
     for (int i = 0; i < 3; i++) {
         for (int j = 0; j < 3; j++)
             setm(L, i, j, iv_mul(iv_div(R[i][j], n), pt(s[j])));
@@ -259,7 +268,7 @@ typedef struct ctx {
     size_t errlen;
     char dir[PATH_MAX];
     FILE *notes;
-    int fromv;
+    int fromv, anim;
     const unsigned char *bin; size_t nbin; int has_bin;
     json_t *root;
     size_t nbv, nbuffers, ntex;
@@ -621,6 +630,44 @@ static int buffer_view(ctx *c, long long v, const unsigned char **base, size_t *
 }
 
 /* ---- accessors -------------------------------------------------------- */
+/* Accessor ai's members every use reads: *J, its pointer p,
+ * componentType, count, bufferView (-1 if absent), byteOffset. */
+static int acc_head(ctx *c, long long ai, char *p, size_t np, json_t **J, long long *ct, long long *cnt,
+                    long long *bv, long long *off)
+{
+    *J = json_array_get(json_object_get(c->root, "accessors"), (size_t)ai);
+    snprintf(p, np, "/accessors/%lld", ai);
+    if (check_common(c, *J, p) != 0 || need_uint(c, *J, "componentType", p, -1, "", ct) != 0
+        || need_uint(c, *J, "count", p, -1, "", cnt) != 0
+        || get_uint(c, *J, "bufferView", p, (long long)c->nbv, "bufferView", -1, bv) < 0
+        || get_uint(c, *J, "byteOffset", p, -1, "", 0, off) < 0)
+        return -1;
+    return 0;
+}
+
+/* The data of accessor p (cnt elements of es bytes at byteOffset off of
+ * bufferView bv, or none when bv < 0: zeros): *base (NULL for zeros) and
+ * *stride, checked to lie inside the bufferView. */
+static int acc_data(ctx *c, const char *p, long long bv, long long off, long long cnt, size_t es,
+                    const unsigned char **base, size_t *stride)
+{
+    *base = NULL;
+    *stride = es;
+    if (bv < 0)
+        return off != 0 ? fail(c, "%s/byteOffset: set without a bufferView", p) : 0;
+    size_t len, vst;
+    if (buffer_view(c, bv, base, &len, &vst) != 0)
+        return -1;
+    if (vst) *stride = vst;
+    if (*stride < es)
+        return fail(c, "%s: byteStride %zu is less than the element size %zu", p, *stride, es);
+    unsigned long long need = (unsigned long long)off + (unsigned long long)*stride * (unsigned long long)(cnt - 1) + es;
+    if (need > len)
+        return fail(c, "%s: needs %llu bytes of bufferView %lld, which has %zu", p, need, bv, len);
+    *base += off;
+    return 0;
+}
+
 static int csize(int ct)
 {
     switch (ct) {
@@ -700,14 +747,10 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     gl_acc *A = &d->accs[ai];
     if (role == 0 && A->used)
         return 0;
-    json_t *J = json_array_get(json_object_get(c->root, "accessors"), (size_t)ai);
+    json_t *J;
     char p[64];
-    long long ct, cnt, bv = -1, off;
-    snprintf(p, sizeof p, "/accessors/%lld", ai);
-    if (check_common(c, J, p) != 0 || need_uint(c, J, "componentType", p, -1, "", &ct) != 0
-        || need_uint(c, J, "count", p, -1, "", &cnt) != 0
-        || get_uint(c, J, "bufferView", p, (long long)c->nbv, "bufferView", -1, &bv) < 0
-        || get_uint(c, J, "byteOffset", p, -1, "", 0, &off) < 0)
+    long long ct, cnt, bv, off;
+    if (acc_head(c, ai, p, sizeof p, &J, &ct, &cnt, &bv, &off) != 0)
         return -1;
     json_t *ty = json_object_get(J, "type"), *nz = json_object_get(J, "normalized");
     if (!json_is_string(ty))
@@ -726,20 +769,8 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     size_t es = (size_t)ncomp * (size_t)csize((int)ct);
     const unsigned char *base = NULL;
     size_t stride = es;
-    if (bv >= 0) {
-        size_t len, vst;
-        if (buffer_view(c, bv, &base, &len, &vst) != 0)
-            return -1;
-        if (vst) stride = vst;
-        if (stride < es)
-            return fail(c, "%s: byteStride %zu is less than the element size %zu", p, stride, es);
-        unsigned long long need = (unsigned long long)off + (unsigned long long)stride * (unsigned long long)(cnt - 1) + es;
-        if (need > len)
-            return fail(c, "%s: needs %llu bytes of bufferView %lld, which has %zu", p, need, bv, len);
-        base += off;
-    } else if (off != 0) {
-        return fail(c, "%s/byteOffset: set without a bufferView", p);
-    }
+    if (acc_data(c, p, bv, off, cnt, es, &base, &stride) != 0)
+        return -1;
     A->ctype = (int)ct;
     A->normalized = nz && json_is_true(nz);
     A->count = (long)cnt;
@@ -1191,8 +1222,510 @@ void gltf_free(gl_doc *d)
     free(d->nodes);
     free(d->leaves);
     free(d->scenes);
+    for (int a = 0; a < d->nanim; a++) {
+        for (int s = 0; s < d->anims[a].nsmp; s++) {
+            free(d->anims[a].smp[s].t);
+            free(d->anims[a].smp[s].v);
+        }
+        free(d->anims[a].smp);
+        free(d->anims[a].ch);
+    }
+    free(d->anims);
     free(d->file);
     memset(d, 0, sizeof *d);
+}
+
+/* ---- animations (--animated) ------------------------------------------ */
+/* The numbers of animation accessor ai (for ptr, the sampler's member):
+ * count elements of ncomp components of type `type`, FLOAT, or with ints
+ * the normalized integer types the spec allows for rotations (5120..5123:
+ * their numerators, one common factor per element, which leaves a
+ * rotation unchanged).  Not sparse; every number finite. */
+static int anim_acc(ctx *c, long long ai, const char *ptr, const char *type, int ncomp, int ints, long want,
+                    double **out, long *count)
+{
+    json_t *J;
+    char p[64];
+    long long ct, cnt, bv, off;
+    if (acc_head(c, ai, p, sizeof p, &J, &ct, &cnt, &bv, &off) != 0)
+        return -1;
+    json_t *ty = json_object_get(J, "type"), *nz = json_object_get(J, "normalized");
+    int norm = nz && json_is_true(nz);
+    if (!json_is_string(ty) || strcmp(json_string_value(ty), type) != 0)
+        return fail(c, "%s (%s): must be of type %s", p, ptr, type);
+    if (!(ct == 5126 || (ints && norm && ct >= 5120 && ct <= 5123)))
+        return fail(c, "%s (%s): must be FLOAT (5126)%s; this one is %lld", p, ptr,
+                    ints ? ", or normalized 5120..5123" : "", ct);
+    if (cnt < 1 || cnt > INT32_MAX / 12)
+        return fail(c, "%s/count: %lld is outside 1..%d", p, cnt, INT32_MAX / 12);
+    if (json_object_get(J, "sparse"))
+        return fail(c, "%s (%s): a sparse animation accessor is not read", p, ptr);
+    size_t es = (size_t)ncomp * (size_t)csize((int)ct), stride = es;
+    const unsigned char *base = NULL;
+    if (acc_data(c, p, bv, off, cnt, es, &base, &stride) != 0)
+        return -1;
+    /* checked before reading: without a bufferView the count is not
+     * bounded by any data (key times that are all zero never increase) */
+    if (want >= 0 && cnt != want)
+        return fail(c, "%s: %lld elements where %ld are needed (one per key time; three for CUBICSPLINE)",
+                    ptr, cnt, want);
+    if (!base && cnt > 1 && want < 0)
+        return fail(c, "%s (%s): %lld key times without a bufferView: all zero, not increasing", p, ptr, cnt);
+    double *v = malloc((size_t)cnt * (size_t)ncomp * sizeof *v);
+    if (!v)
+        return fail(c, "out of memory");
+    for (long long k = 0; k < cnt; k++)
+        for (int j = 0; j < ncomp; j++) {
+            double den, x = base ? comp(base + (size_t)k * stride, (int)ct, j, &den, norm) : 0.0;
+            if (!isfinite(x)) {
+                free(v);
+                return fail(c, "%s (%s): element %lld is not finite", p, ptr, k);
+            }
+            v[k * ncomp + j] = x;
+        }
+    *out = v;
+    *count = (long)cnt;
+    return 0;
+}
+
+/* The animations' samplers and channels (GLTF_ANIMATED), or a note that
+ * the boxes are for the static pose. */
+static int load_anims(ctx *c)
+{
+    gl_doc *d = c->d;
+    json_t *A;
+    size_t na;
+    if (top_array(c, "animations", &A, &na) != 0)
+        return -1;
+    if (na == 0)
+        return 0;
+    if (!c->anim) {
+        note(c, "/animations: %zu animation%s not bounded: the boxes are for the static pose "
+                "(--animated bounds every pose)", na, na == 1 ? " is" : "s are");
+        return 0;
+    }
+    if (na > INT_MAX / 2)
+        return fail(c, "too many animations");
+    d->anims = calloc(na, sizeof *d->anims);
+    if (!d->anims)
+        return fail(c, "out of memory");
+    d->nanim = (int)na;
+    static const char *const paths[3] = { "translation", "rotation", "scale" };
+    for (size_t a = 0; a < na; a++) {
+        json_t *N = json_array_get(A, a), *S, *C;
+        gl_anim *G = &d->anims[a];
+        char p[64];
+        snprintf(p, sizeof p, "/animations/%zu", a);
+        if (check_common(c, N, p) != 0)
+            return -1;
+        S = json_object_get(N, "samplers");
+        C = json_object_get(N, "channels");
+        if (!json_is_array(S) || json_array_size(S) == 0 || !json_is_array(C) || json_array_size(C) == 0)
+            return fail(c, "%s: must have non-empty arrays 'samplers' and 'channels'", p);
+        if (json_array_size(S) > INT_MAX / 2 || json_array_size(C) > INT_MAX / 2)
+            return fail(c, "%s: too many samplers or channels", p);
+        G->smp = calloc(json_array_size(S), sizeof *G->smp);
+        G->ch = calloc(json_array_size(C), sizeof *G->ch);
+        if (!G->smp || !G->ch)
+            return fail(c, "out of memory");
+        G->nsmp = (int)json_array_size(S);
+        for (int s = 0; s < G->nsmp; s++) {
+            json_t *X = json_array_get(S, (size_t)s), *ip;
+            gl_sampler *M = &G->smp[s];
+            char q[100];
+            long long in;
+            snprintf(q, sizeof q, "%s/samplers/%d", p, s);
+            if (check_common(c, X, q) != 0 || need_uint(c, X, "input", q, (long long)d->na, "accessor", &in) != 0
+                || need_uint(c, X, "output", q, (long long)d->na, "accessor", &M->output) != 0)
+                return -1;
+            ip = json_object_get(X, "interpolation");
+            M->interp = GL_LINEAR;
+            if (ip) {
+                const char *v = json_is_string(ip) ? json_string_value(ip) : "";
+                if (strcmp(v, "LINEAR") == 0) M->interp = GL_LINEAR;
+                else if (strcmp(v, "STEP") == 0) M->interp = GL_STEP;
+                else if (strcmp(v, "CUBICSPLINE") == 0) M->interp = GL_CUBICSPLINE;
+                else return fail(c, "%s/interpolation: must be LINEAR, STEP or CUBICSPLINE", q);
+            }
+            strcat(q, "/input");
+            if (anim_acc(c, in, q, "SCALAR", 1, 0, -1, &M->t, &M->n) != 0)
+                return -1;
+            for (long k = 1; k < M->n; k++)
+                if (!(M->t[k] > M->t[k - 1]))
+                    return fail(c, "%s: key time %ld (%.17g) is not above the one before (%.17g)", q, k,
+                                M->t[k], M->t[k - 1]);
+        }
+        G->nch = (int)json_array_size(C);
+        for (int k = 0; k < G->nch; k++) {
+            json_t *X = json_array_get(C, (size_t)k), *T, *pa;
+            gl_channel *H = &G->ch[k];
+            char q[100], qt[120];
+            long long smp, node;
+            snprintf(q, sizeof q, "%s/channels/%d", p, k);
+            snprintf(qt, sizeof qt, "%s/target", q);
+            H->node = -1;
+            if (check_common(c, X, q) != 0 || need_uint(c, X, "sampler", q, G->nsmp, "sampler", &smp) != 0)
+                return -1;
+            T = json_object_get(X, "target");
+            if (!T)
+                return fail(c, "%s: missing member 'target'", q);
+            if (check_common(c, T, qt) != 0 || get_uint(c, T, "node", qt, d->nn, "node", -1, &node) < 0)
+                return -1;
+            pa = json_object_get(T, "path");
+            if (!json_is_string(pa))
+                return fail(c, "%s/path: missing or not a string", qt);
+            const char *pv = json_string_value(pa);
+            H->path = -1;
+            for (int j = 0; j < 3; j++)
+                if (strcmp(pv, paths[j]) == 0) H->path = j;
+            if (H->path < 0) {
+                if (strcmp(pv, "weights") != 0)   /* morph weights: flagged with the targets */
+                    note(c, "%s/path: '%s' is not bounded", qt, pv);
+                continue;
+            }
+            if (node < 0)                         /* no node: an extension's target */
+                continue;
+            if (d->nodes[node].has_matrix)
+                return fail(c, "%s/node: node %lld has a `matrix`: an animated node must use TRS", qt, node);
+            for (int j = 0; j < k; j++)
+                if (G->ch[j].node == node && G->ch[j].path == H->path)
+                    return fail(c, "%s: node %lld's %s is animated twice (channel %d too)", qt, node, pv, j);
+            gl_sampler *M = &G->smp[smp];
+            int nc = H->path == 1 ? 4 : 3;
+            char qo[120];
+            snprintf(qo, sizeof qo, "%s/samplers/%lld/output", p, smp);
+            if (!M->v) {
+                long cnt, want = M->interp == GL_CUBICSPLINE ? 3 * M->n : M->n;
+                if (anim_acc(c, M->output, qo, nc == 4 ? "VEC4" : "VEC3", nc, nc == 4, want, &M->v, &cnt) != 0)
+                    return -1;
+                M->ncomp = nc;
+                for (long e = 0; nc == 4 && e < M->n; e++) {
+                    const double *v = M->v + 4 * (M->interp == GL_CUBICSPLINE ? 3 * e + 1 : e);
+                    if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0 && v[3] == 0.0)
+                        return fail(c, "%s: the rotation of key %ld is zero", qo, e);
+                }
+            } else if (M->ncomp != nc) {
+                return fail(c, "%s: read as %s by one channel and as %s by %s", qo,
+                            M->ncomp == 4 ? "a rotation" : "a translation or scale", pv, q);
+            }
+            H->node = (int)node;
+            H->sampler = (int)smp;
+        }
+    }
+    return 0;
+}
+
+/* the hull of two enclosures */
+static iv hull2(iv a, iv b)
+{
+    iv r;
+    r.lo = a.lo < b.lo ? a.lo : b.lo;
+    r.hi = a.hi > b.hi ? a.hi : b.hi;
+    return r;
+}
+
+/* the rotation matrix of q (any non-zero scale), entry-wise enclosed;
+ * [-1, 1] entries (every rotation's) if q cannot be bounded here */
+static int rot_point(const double q[4], iv R[3][3])
+{
+    static const double zero[3] = { 0, 0, 0 }, one[3] = { 1, 1, 1 };
+    gl_imat L;
+    int lost = trs_local(zero, q, one, &L) != 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            R[i][j].lo = lost ? -1.0 : L.lo[i][j];
+            R[i][j].hi = lost ? 1.0 : L.hi[i][j];
+        }
+    return lost;
+}
+
+/* the rotation of every q/|q| with q in the box Q (componentwise
+ * intervals): the unit formula over |q|^2, in intervals; [-1, 1] entries
+ * where Q may hold 0 or its numbers are too large to bound here */
+static int rot_box(const iv Q[4], iv R[3][3])
+{
+    int lost = 0;
+    for (int k = 0; k < 4; k++)
+        if (!(fabs(Q[k].lo) <= 0x1p250 && fabs(Q[k].hi) <= 0x1p250)) lost = 1;
+    iv n;
+    unit_formula(Q, R, &n);
+    if (!(n.lo >= 0x1p-500)) lost = 1;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            iv e = lost ? pt(0.0) : iv_div(R[i][j], n);
+            R[i][j].lo = lost || e.lo < -1.0 ? -1.0 : e.lo;   /* a rotation's entries are in [-1, 1] */
+            R[i][j].hi = lost || e.hi > 1.0 ? 1.0 : e.hi;
+        }
+    return lost;
+}
+
+/* (1 - u) a + u b at a point u of [0, 1], enclosed */
+static iv lerp_at(double a, double b, double u)
+{
+    return iv_add(iv_mul(add_enc(1.0, -u), pt(a)), mul_enc(u, b));
+}
+
+/* Sampler M over the cell [ca, cb) (inside one interval between its key
+ * times, or before the first, or after the last; a single time when
+ * ca == cb): for translation and scale, V[0..2] encloses the value at
+ * every t of the cell (its end cb is the next cell's start: a STEP
+ * sampler's jump there is left to it); for a rotation, R encloses its
+ * rotation matrix.  1 if the rotation could not
+ * be bounded (R is then [-1, 1]), 0 otherwise. */
+static int sample_cell(const gl_sampler *M, double ca, double cb, iv V[3], iv R[3][3])
+{
+    long lo = 0, hi = M->n;                       /* first key time above ca */
+    while (lo < hi) {
+        long m = lo + (hi - lo) / 2;
+        if (M->t[m] <= ca) lo = m + 1; else hi = m;
+    }
+    long i = lo - 1;                              /* t[i] <= ca < t[i + 1] */
+    int nc = M->ncomp, cub = M->interp == GL_CUBICSPLINE, ofs = cub ? nc : 0, st = cub ? 3 * nc : nc;
+    if (i < 0 || i + 1 >= M->n) {                 /* clamped: the first or last key */
+        const double *v = M->v + (size_t)(i < 0 ? 0 : M->n - 1) * (size_t)st + (size_t)ofs;
+        if (nc == 4) return rot_point(v, R);
+        for (int j = 0; j < 3; j++) V[j] = pt(v[j]);
+        return 0;
+    }
+    const double *a = M->v + (size_t)i * (size_t)st + (size_t)ofs, *b = a + st;
+    if (M->interp == GL_STEP) {                   /* cells are half-open: [ca, cb) */
+        if (nc == 4) return rot_point(a, R);
+        for (int j = 0; j < 3; j++) V[j] = pt(a[j]);
+        return 0;
+    }
+    /* the cell's parameters u = (t - t[i]) / (t[i+1] - t[i]) in [ul, uh] */
+    iv den = add_enc(M->t[i + 1], -M->t[i]);
+    double ul = 0.0, uh = 1.0;
+    if (den.lo > 0) {
+        ul = iv_div(add_enc(ca, -M->t[i]), den).lo;
+        uh = iv_div(add_enc(cb, -M->t[i]), den).hi;
+        if (!(ul >= 0.0)) ul = 0.0;
+        if (!(uh <= 1.0)) uh = 1.0;
+        if (ul > uh) ul = uh;
+    }
+    if (M->interp == GL_LINEAR) {
+        if (nc == 4) {                            /* slerp: the library's cells */
+            cbx_trs k0, k1;
+            cbx_imat P[8];
+            size_t np = 0;
+            memset(&k0, 0, sizeof k0);
+            k0.s[0] = k0.s[1] = k0.s[2] = 1.0;
+            k1 = k0;
+            memcpy(k0.q, a, sizeof k0.q);
+            memcpy(k1.q, b, sizeof k1.q);
+            if (cbx_trs_pieces(&k0, &k1, CBX_SLERP, ul, uh, 0, P, 8, &np) != CBX_OK || np == 0) {
+                for (int r = 0; r < 3; r++) for (int j = 0; j < 3; j++) { R[r][j].lo = -1.0; R[r][j].hi = 1.0; }
+                return 1;
+            }
+            for (int r = 0; r < 3; r++)
+                for (int j = 0; j < 3; j++) {
+                    R[r][j].lo = P[0].lo[r][j];
+                    R[r][j].hi = P[0].hi[r][j];
+                    for (size_t k = 1; k < np; k++) {
+                        if (P[k].lo[r][j] < R[r][j].lo) R[r][j].lo = P[k].lo[r][j];
+                        if (P[k].hi[r][j] > R[r][j].hi) R[r][j].hi = P[k].hi[r][j];
+                    }
+                }
+            return 0;
+        }
+        for (int j = 0; j < 3; j++)               /* linear in u: its ends */
+            V[j] = hull2(lerp_at(a[j], b[j], ul), lerp_at(a[j], b[j], uh));
+        return 0;
+    }
+    /* CUBICSPLINE: the segment in Bezier form, points a, a + D aout / 3,
+     * b - D bin / 3, b (D = t[i+1] - t[i]); the part over [ul, uh] lies in
+     * the hull of its own Bezier points, the blossoms P(ul, ul, ul),
+     * P(ul, ul, uh), P(ul, uh, uh), P(uh, uh, uh) (de Casteljau steps in
+     * intervals) */
+    const double *aout = a + nc, *bin = b - nc;
+    iv W[4];
+    for (int j = 0; j < nc; j++) {
+        iv P[4];
+        P[0] = pt(a[j]);
+        P[1] = iv_add(pt(a[j]), iv_div(iv_mul(den, pt(aout[j])), pt(3.0)));
+        P[2] = iv_add(pt(b[j]), iv_neg(iv_div(iv_mul(den, pt(bin[j])), pt(3.0))));
+        P[3] = pt(b[j]);
+        static const int sel[4][3] = { { 0, 0, 0 }, { 0, 0, 1 }, { 0, 1, 1 }, { 1, 1, 1 } };
+        for (int k = 0; k < 4; k++) {
+            iv B[4] = { P[0], P[1], P[2], P[3] };
+            for (int l = 0; l < 3; l++) {
+                double u = sel[k][l] ? uh : ul;
+                iv om = add_enc(1.0, -u);
+                for (int m = 0; m + l < 3; m++)
+                    B[m] = iv_add(iv_mul(om, B[m]), iv_mul(pt(u), B[m + 1]));
+            }
+            W[j] = k == 0 ? B[0] : hull2(W[j], B[0]);
+        }
+    }
+    if (nc == 4)
+        return rot_box(W, R);
+    for (int j = 0; j < 3; j++) V[j] = W[j];
+    return 0;
+}
+
+static int cmp_dbl(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+typedef struct anim_ctx {
+    gl_doc *d;
+    const gl_anim *G;
+    int *chan;                  /* chan[3 k + path]: channel of node k, or -1 */
+    signed char *aff;           /* node k or one above it is animated */
+    gl_imat *world;             /* the cell's world maps */
+    long *stamp, cell;          /* world[k] is this cell's when stamp[k] == cell */
+    int lost;                   /* some rotation bounded as any rotation */
+} anim_ctx;
+
+/* node k's world map over the cell [ca, cb] */
+static const gl_imat *cell_world(anim_ctx *A, int k, double ca, double cb)
+{
+    gl_doc *d = A->d;
+    gl_node *g = &d->nodes[k];
+    if (!A->aff[k])
+        return world_of(d, k);
+    if (A->stamp[k] == A->cell)
+        return &A->world[k];
+    gl_imat L = g->local;
+    const int *ch = A->chan + 3 * (size_t)k;
+    if (ch[0] >= 0 || ch[1] >= 0 || ch[2] >= 0) {
+        iv T[3], S[3], R[3][3], dummy[3][3];
+        for (int j = 0; j < 3; j++) { T[j] = pt(g->t[j]); S[j] = pt(g->s[j]); }
+        if (ch[0] >= 0)
+            (void)sample_cell(&A->G->smp[A->G->ch[ch[0]].sampler], ca, cb, T, dummy);
+        if (ch[2] >= 0)
+            (void)sample_cell(&A->G->smp[A->G->ch[ch[2]].sampler], ca, cb, S, dummy);
+        if (ch[1] >= 0)
+            A->lost |= sample_cell(&A->G->smp[A->G->ch[ch[1]].sampler], ca, cb, T, R);
+        else
+            A->lost |= rot_point(g->r, R);
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++)
+                setm(&L, i, j, iv_mul(R[i][j], S[j]));
+            setm(&L, i, 3, T[i]);
+        }
+    }
+    if (g->parent < 0)
+        A->world[k] = L;
+    else
+        (void)cbx_imat_compose(cell_world(A, g->parent, ca, cb), &L, &A->world[k]);
+    A->stamp[k] = A->cell;
+    return &A->world[k];
+}
+
+/* --animated: each mesh instance's box is joined with its boxes over every
+ * pose of every animation.  An animation's key times (all its channels')
+ * cut the time line into intervals, each cut into d->cells cells
+ * [ca, cb) of equal length (ends rounded, but shared by neighbours: the
+ * cells cover the interval), and the last key time is a cell of its own.  In a cell, every animated node's local map is an
+ * interval matrix that holds T(t) R(t) diag(S(t)) at every t of the cell
+ * (each of T, R, S enclosed over the cell by sample_cell), the nodes below
+ * an animated one compose their chain again (cbx_imat_compose), and each
+ * of their instances' boxes is mapped by cbx_transform_box_imat.  Before
+ * its first key and after its last a channel holds its first or last
+ * value: the cells at the ends of the time line cover those times. */
+static int anim_bound(ctx *c)
+{
+    gl_doc *d = c->d;
+    size_t nn = (size_t)d->nn;
+    anim_ctx A;
+    memset(&A, 0, sizeof A);
+    A.d = d;
+    A.chan = malloc(3 * (nn + 1) * sizeof *A.chan);
+    A.aff = malloc(nn + 1);
+    A.world = malloc((nn + 1) * sizeof *A.world);
+    A.stamp = malloc((nn + 1) * sizeof *A.stamp);
+    int rc = 0;
+    if (!A.chan || !A.aff || !A.world || !A.stamp)
+        rc = fail(c, "out of memory");
+    for (int a = 0; a < d->nanim && rc == 0; a++) {
+        const gl_anim *G = &d->anims[a];
+        A.G = G;
+        for (size_t k = 0; k < 3 * nn; k++) A.chan[k] = -1;
+        size_t nt = 0;
+        for (int h = 0; h < G->nch; h++)
+            if (G->ch[h].node >= 0) {
+                A.chan[3 * (size_t)G->ch[h].node + (size_t)G->ch[h].path] = h;
+                nt += (size_t)G->smp[G->ch[h].sampler].n;
+            }
+        if (nt == 0)
+            continue;
+        /* affected: animated, or below an animated node */
+        for (size_t k = 0; k < nn; k++) {
+            int x = (int)k, hit = 0;
+            for (; x >= 0 && !hit; x = d->nodes[x].parent)
+                hit = A.chan[3 * (size_t)x] >= 0 || A.chan[3 * (size_t)x + 1] >= 0 || A.chan[3 * (size_t)x + 2] >= 0;
+            A.aff[k] = (signed char)hit;
+            A.stamp[k] = -1;
+        }
+        double *tau = malloc(nt * sizeof *tau);
+        if (!tau) { rc = fail(c, "out of memory"); break; }
+        size_t m = 0;
+        for (int h = 0; h < G->nch; h++)
+            if (G->ch[h].node >= 0) {
+                const gl_sampler *M = &G->smp[G->ch[h].sampler];
+                for (long e = 0; e < M->n; e++) tau[m++] = M->t[e];
+            }
+        qsort(tau, m, sizeof *tau, cmp_dbl);
+        size_t u = 0;
+        for (size_t e = 0; e < m; e++)
+            if (u == 0 || tau[e] != tau[u - 1]) tau[u++] = tau[e];
+        /* the cells [ca, cb) of each interval, then the last key time
+         * alone (the pose from there on) */
+        size_t K = (size_t)d->cells, ncell = (u - 1) * K + 1;
+        for (size_t q = 0; q < ncell; q++) {
+            size_t iv0 = q / K, r = q % K;
+            int last = q + 1 == ncell;
+            double t0 = last ? tau[u - 1] : tau[iv0], t1 = last ? t0 : tau[iv0 + 1], w = t1 - t0;
+            double ca = r == 0 || last ? t0 : t0 + w * ((double)r / (double)K);
+            double cb = r + 1 == K || last ? t1 : t0 + w * ((double)(r + 1) / (double)K);
+            /* the same rounded ends for neighbours; inside [t0, t1] */
+            if (ca < t0) ca = t0;
+            if (ca > t1) ca = t1;
+            if (cb < ca) cb = ca;
+            if (cb > t1) cb = t1;
+            A.cell = (long)q;
+            for (int k = 0; k < d->nl; k++) {
+                gl_leaf *L = &d->leaves[k];
+                if (!A.aff[L->node] || L->st == CBX_EINVAL)
+                    continue;
+                cbx_box b;
+                cbx_status st = cbx_transform_box_imat(cell_world(&A, L->node, ca, cb), &L->local, &b);
+                if (st == CBX_EMPTY)
+                    continue;
+                worse(&L->st, st);
+                for (int j = 0; j < 3; j++) {
+                    if (b.lo[j] < L->world.lo[j]) L->world.lo[j] = b.lo[j];
+                    if (b.hi[j] > L->world.hi[j]) L->world.hi[j] = b.hi[j];
+                }
+            }
+        }
+        free(tau);
+    }
+    if (rc == 0 && A.lost)
+        note(c, "/animations: a rotation was bounded as any rotation (a key's numbers too large or too "
+                "small to bound here, or a cubic segment whose quaternions may pass through zero)");
+    free(A.chan);
+    free(A.aff);
+    free(A.world);
+    free(A.stamp);
+    return rc;
+}
+
+/* the scene's box and status: the hull of its instances' */
+static void scene_hull(gl_doc *d, gl_scene *G)
+{
+    G->st = G->n == 0 ? CBX_EMPTY : CBX_OK;
+    for (int j = 0; j < 3; j++) { G->world.lo[j] = HUGE_VAL; G->world.hi[j] = -HUGE_VAL; }
+    for (int k = G->first; k < G->first + G->n; k++) {
+        worse(&G->st, d->leaves[k].st);
+        for (int j = 0; j < 3; j++) {
+            if (d->leaves[k].world.lo[j] < G->world.lo[j]) G->world.lo[j] = d->leaves[k].world.lo[j];
+            if (d->leaves[k].world.hi[j] > G->world.hi[j]) G->world.hi[j] = d->leaves[k].world.hi[j];
+        }
+    }
 }
 
 static int load(ctx *c)
@@ -1260,7 +1793,8 @@ static int load(ctx *c)
         if (check_common(c, json_array_get(meshes, k), p) != 0) { free(checked); return -1; }
     }
     long long sc;                  /* checked only: every scene is printed */
-    if (get_uint(c, c->root, "scene", "", (long long)ns, "scene", 0, &sc) < 0 || load_nodes(c, nodes, nn, nm) != 0) {
+    if (get_uint(c, c->root, "scene", "", (long long)ns, "scene", 0, &sc) < 0 || load_nodes(c, nodes, nn, nm) != 0
+        || load_anims(c) != 0) {
         free(checked);
         return -1;
     }
@@ -1282,8 +1816,6 @@ static int load(ctx *c)
         if (roots && !json_is_array(roots)) { rc = fail(c, "%s/nodes: must be an array", p); break; }
         gl_scene *G = &d->scenes[s];
         G->first = d->nl;
-        G->st = CBX_OK;
-        for (int j = 0; j < 3; j++) { G->world.lo[j] = HUGE_VAL; G->world.hi[j] = -HUGE_VAL; }
         for (size_t r = 0; roots && r < json_array_size(roots) && rc == 0; r++) {
             json_t *v = json_array_get(roots, r);
             if (!json_is_integer(v) || json_integer_value(v) < 0 || json_integer_value(v) >= (long long)nn) {
@@ -1324,24 +1856,20 @@ static int load(ctx *c)
             }
         }
         G->n = d->nl - G->first;
-        if (G->n == 0) G->st = CBX_EMPTY;
-        for (int k = G->first; k < d->nl; k++) {
-            worse(&G->st, d->leaves[k].st);
-            for (int j = 0; j < 3; j++) {
-                if (d->leaves[k].world.lo[j] < G->world.lo[j]) G->world.lo[j] = d->leaves[k].world.lo[j];
-                if (d->leaves[k].world.hi[j] > G->world.hi[j]) G->world.hi[j] = d->leaves[k].world.hi[j];
-            }
-        }
         if (G->n == 0 && rc == 0)
             note(c, "%s: the scene has no mesh instance", p);
     }
     free(stack);
     free(listed);
     free(checked);
+    if (rc == 0 && d->nanim > 0)
+        rc = anim_bound(c);
+    for (int k = 0; k < d->ns && rc == 0; k++)
+        scene_hull(d, &d->scenes[k]);
     return rc;
 }
 
-int gltf_load(gl_doc *d, const char *path, int from_vertices, FILE *notes, char *err, size_t errlen)
+int gltf_load(gl_doc *d, const char *path, unsigned opts, FILE *notes, char *err, size_t errlen)
 {
     ctx c;
     memset(d, 0, sizeof *d);
@@ -1351,7 +1879,11 @@ int gltf_load(gl_doc *d, const char *path, int from_vertices, FILE *notes, char 
     c.err = err;
     c.errlen = errlen;
     c.notes = notes;
-    c.fromv = from_vertices;
+    c.fromv = (opts & GLTF_FROM_VERTICES) != 0;
+    c.anim = (opts & GLTF_ANIMATED) != 0;
+    d->cells = (int)(opts >> 8);
+    if (d->cells < 1 || d->cells > GLTF_ANIM_CELLS_MAX)
+        d->cells = GLTF_ANIM_CELLS;
     /* the folder that relative URIs may not leave */
     char tmp[PATH_MAX];
     snprintf(tmp, sizeof tmp, "%s", path);
@@ -1381,20 +1913,31 @@ static char *name_json(const gl_doc *d, const char *arr, int k)
 
 int gltf_main(int argc, char **argv)
 {
-    int json = 0, hex = 0, fromv = 0;
+    int json = 0, hex = 0;
+    unsigned opts = 0;
     const char *path = NULL;
     for (int k = 1; k < argc; k++) {
         if (strcmp(argv[k], "--json") == 0) json = 1;
         else if (strcmp(argv[k], "--hex") == 0) hex = 1;
-        else if (strcmp(argv[k], "--from-vertices") == 0) fromv = 1;
+        else if (strcmp(argv[k], "--from-vertices") == 0) opts |= GLTF_FROM_VERTICES;
+        else if (strcmp(argv[k], "--animated") == 0) opts |= GLTF_ANIMATED;
+        else if (strcmp(argv[k], "--cells") == 0 && k + 1 < argc) {
+            char *e;
+            long n = strtol(argv[++k], &e, 10);
+            if (*e || n < 1 || n > GLTF_ANIM_CELLS_MAX) {
+                fprintf(stderr, "certbox: --cells: '%s' is not a whole number in 1..%d\n", argv[k], GLTF_ANIM_CELLS_MAX);
+                return 2;
+            }
+            opts |= GLTF_CELLS(n);
+        }
         else if (argv[k][0] != '-' && !path) path = argv[k];
         else return -1;                            /* the caller reports it */
     }
     if (!path || !gltf_sniff(path))
-        return fromv && path ? (fprintf(stderr, "certbox: --from-vertices is for glTF files\n"), 2) : -1;
+        return opts && path ? (fprintf(stderr, "certbox: --from-vertices and --animated are for glTF files\n"), 2) : -1;
     gl_doc d;
     char err[600];
-    if (gltf_load(&d, path, fromv, stderr, err, sizeof err) != 0) {
+    if (gltf_load(&d, path, opts, stderr, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 2;
     }

@@ -62,6 +62,30 @@ typedef struct gl_leaf {
 
 typedef struct gl_scene { cbx_box world; cbx_status st; int first, n; } gl_scene;
 
+/* An animation sampler as read (--animated): n key times t (finite,
+ * strictly increasing) and, per key, ncomp numbers (3: translation or
+ * scale; 4: a rotation, as stored: normalized integers as their
+ * numerators, a common factor that leaves the rotation unchanged), three
+ * such groups per key for CUBICSPLINE (in-tangent, value, out-tangent).
+ * v is NULL until a channel reads the sampler's output (its path decides
+ * the type).  interp: GL_LINEAR, GL_STEP, GL_CUBICSPLINE. */
+enum { GL_LINEAR, GL_STEP, GL_CUBICSPLINE };
+typedef struct gl_sampler { int interp, ncomp; long n; long long output; double *t, *v; } gl_sampler;
+/* A channel: node, path (0 translation, 1 rotation, 2 scale), sampler. */
+typedef struct gl_channel { int node, path, sampler; } gl_channel;
+typedef struct gl_anim { gl_sampler *smp; int nsmp; gl_channel *ch; int nch; } gl_anim;
+
+/* gltf_load's options */
+#define GLTF_FROM_VERTICES 1u   /* each accessor bounded by its vertices, not min/max */
+#define GLTF_ANIMATED      2u   /* boxes over the static pose and every pose of every animation */
+/* --animated: each interval between consecutive key times of an animation
+ * is cut into n cells of equal length, 1 <= n <= GLTF_ANIM_CELLS_MAX
+ * (GLTF_ANIM_CELLS when not given); the excess about halves when n
+ * doubles (docs/gltf.md) */
+#define GLTF_CELLS(n)      ((unsigned)(n) << 8)
+#define GLTF_ANIM_CELLS_MAX 4096
+#define GLTF_ANIM_CELLS 32
+
 typedef struct gl_doc {
     void *json;                 /* json_t * (the parsed document) */
     unsigned char *file; size_t nfile;
@@ -70,6 +94,8 @@ typedef struct gl_doc {
     gl_acc *accs; int na;
     gl_leaf *leaves; int nl, capl;
     gl_scene *scenes; int ns;
+    gl_anim *anims; int nanim;  /* read with GLTF_ANIMATED only */
+    int cells;                  /* cells per key interval (GLTF_ANIMATED) */
     int notes;                  /* flagged problems (printed on stderr) */
 } gl_doc;
 
@@ -77,12 +103,15 @@ typedef struct gl_doc {
  * blanks), 0 otherwise (or unreadable). */
 int gltf_sniff(const char *path);
 
-/* Load, check and bound a glTF file.  from_vertices: bound each accessor
- * by its vertices instead of its min/max.  0 on success (notes on the
+/* Load, check and bound a glTF file.  opts: GLTF_FROM_VERTICES (bound
+ * each accessor by its vertices instead of its min/max), GLTF_ANIMATED
+ * (each mesh instance's box also holds it at every time of every
+ * animation: translation, rotation and scale channels, LINEAR (rotation:
+ * slerp), STEP and CUBICSPLINE).  0 on success (notes on the
  * file's own claims, if any, are printed on `notes`, which may be NULL);
  * -1 and err "FILE:LINE:COLUMN: msg", "FILE: byte N: msg" or
  * "FILE: /json/pointer: msg" on a bad file (nothing kept). */
-int gltf_load(gl_doc *d, const char *path, int from_vertices, FILE *notes,
+int gltf_load(gl_doc *d, const char *path, unsigned opts, FILE *notes,
               char *err, size_t errlen);
 void gltf_free(gl_doc *d);
 
@@ -101,7 +130,7 @@ long gltf_sparse_index(const gl_doc *d, int a, long s);
  * vertex is sparse (or the accessor has a bufferView). */
 long gltf_first_zero(const gl_doc *d, int a);
 
-/* The tool: certbox [--json] [--hex] [--from-vertices] FILE.gltf|FILE.glb.
+/* The tool: certbox [--json] [--hex] [--from-vertices] [--animated [--cells N]] FILE.gltf|FILE.glb.
  * Returns the exit status, or -1 if FILE is not glTF (or no FILE given):
  * then the caller goes on with its own formats. */
 int gltf_main(int argc, char **argv);

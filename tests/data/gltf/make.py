@@ -180,3 +180,124 @@ g[boff:boff + 4] = struct.pack("<I", 96 + 100)
 open("glb_bchunk.glb", "wb").write(bytes(g))
 open("glb_short.glb", "wb").write(b"glTF\x02\x00")
 open("glb_nobin.glb", "wb").write(glb(gdoc))
+
+# ---- animations (certbox --animated) ------------------------------------
+# Each sampler's key times and values are also written in its "extras"
+# (JSON numbers, the float32 values exactly; normalized integers as their
+# integers): tests/test_gltf.c compares them with what the reader read
+# from the buffer, then bounds the poses exactly.
+import math
+
+def quat(axis, deg, scale=1.0):
+    n = math.sqrt(sum(a * a for a in axis))
+    h = math.radians(deg) / 2
+    return tuple(scale * a / n * math.sin(h) for a in axis) + (scale * math.cos(h),)
+
+def r32(x):
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+def anim_doc(nodes, anims, scenes=None, meshes=None):
+    """anims: a list of animations, each a list of channels
+    (node, path, interp, times, values[, ctype]); values: one tuple per
+    output element (CUBICSPLINE: in-tangent, value, out-tangent per key)."""
+    data = bytearray(b"".join(f32(*p) for p in CUBE))
+    accs = [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+             "min": [-1, -2, -0.25], "max": [1, 0.5, 3]}]
+    views = [{"buffer": 0, "byteLength": 96}]
+    out = []
+    def add(blob, acc):
+        while len(data) % 4: data.append(0)
+        views.append({"buffer": 0, "byteOffset": len(data), "byteLength": len(blob)})
+        data.extend(blob)
+        accs.append(dict(acc, bufferView=len(views) - 1))
+        return len(accs) - 1
+    for chans in anims:
+        samplers, channels = [], []
+        for ch in chans:
+            node, path, interp, times, values = ch[:5]
+            ct = ch[5] if len(ch) > 5 else 5126
+            t32 = [r32(t) for t in times]
+            ia = add(f32(*t32), {"componentType": 5126, "count": len(t32), "type": "SCALAR",
+                                 "min": [min(t32)], "max": [max(t32)]})
+            nc = len(values[0])
+            if ct == 5126:
+                flat = [r32(v) for e in values for v in e]
+                blob = f32(*flat)
+                acc = {"componentType": 5126}
+            else:
+                flat = [int(v) for e in values for v in e]
+                blob = struct.pack("<%d%s" % (len(flat), {5120: "b", 5121: "B", 5122: "h", 5123: "H"}[ct]), *flat)
+                acc = {"componentType": ct, "normalized": True}
+            oa = add(blob, dict(acc, count=len(values), type="VEC%d" % nc))
+            samplers.append({"input": ia, "output": oa, "interpolation": interp,
+                             "extras": {"input": t32, "output": flat}})
+            channels.append({"sampler": len(samplers) - 1, "target": {"node": node, "path": path}})
+        out.append({"samplers": samplers, "channels": channels})
+    d = doc(nodes, scenes=scenes, accessors=accs, views=views, meshes=meshes,
+            buffers=[{"byteLength": len(data), "uri": b64(bytes(data))}])
+    d["animations"] = out
+    return d
+
+# a turning, moving, scaling parent and a child on cubic splines
+Z = (0.0, 0.0, 0.0, 0.0)
+write("anim_rot.gltf", anim_doc([
+    {"children": [1], "translation": [1, 2, 3]},
+    {"mesh": 0, "translation": [4, 0, 0], "rotation": list(quat((0, 0, 1), 30))}], [[
+    (0, "rotation", "LINEAR", [0, 1, 2.5, 4],
+     [quat((1, 1, 0), 0), quat((1, 1, 0), 120), quat((0.2, 1, -0.5), 200, 2.0), quat((0, 0, 1), -90)]),
+    (0, "translation", "LINEAR", [0, 0.7, 3], [(0, 0, 0), (5, -1, 2), (5, 40, 2)]),
+    (0, "scale", "STEP", [0.5, 4], [(1, 1, 1), (2, -0.5, 1)]),     # its last value from t = 4 on only
+    (1, "rotation", "CUBICSPLINE", [0, 1.5, 3],
+     [Z, quat((1, 0, 0), 0), (0.3, 0, 0, 0), (0.1, 0.2, 0, 0), quat((1, 0, 0), 80), (0, 0.5, 0, 0),
+      Z, quat((0, 1, 0), 170), Z]),
+    (1, "translation", "CUBICSPLINE", [0, 2, 4],
+     [(0, 0, 0), (4, 0, 0), (3, 1, 0), (1, 1, 1), (4, 5, 0), (-2, 0, 3), (0, 0, 0), (0, 0, -6), (0, 0, 0)])]]))
+# two animations, one sharing a sampler between two nodes; a rotation in
+# normalized shorts (STEP), a half turn (its keys' dot product is 0: both
+# arcs), keys equal, a single key, times before and after others'
+s = 32767
+write("anim_two.gltf", anim_doc([
+    {"children": [1, 2]},
+    {"mesh": 0, "translation": [-3, 0, 0]},
+    {"mesh": 0, "translation": [3, 0, 0], "scale": [0.5, 0.5, 0.5]}], [[
+    (1, "rotation", "LINEAR", [-1, 1], [quat((0, 1, 0), 0), quat((0, 1, 0), 180)]),
+    (2, "rotation", "STEP", [0, 0.25, 0.5], [(0, 0, 0, s), (0, s, 0, 0), (-s, 0, 0, 0)], 5122),
+    (0, "translation", "LINEAR", [2], [(1, 1, 1)])],
+    [(1, "rotation", "LINEAR", [0, 1, 2], [quat((1, 2, 3), 45), quat((1, 2, 3), 45), quat((3, 2, 1), 1e-4)]),
+     (2, "scale", "LINEAR", [0, 10], [(1, 1, 1), (-1, 3, 1e-3)]),
+     (0, "rotation", "LINEAR", [0, 3], [quat((0, 0, 1), 0), quat((0, 0, 1), 179.9)])]]))
+# broken animations (refused with --animated)
+one = [(0, "rotation", "LINEAR", [0, 1], [quat((0, 0, 1), 0), quat((0, 0, 1), 90)])]
+write("anim_count.gltf", anim_doc([{"mesh": 0}], [[(0, "rotation", "LINEAR", [0, 1, 2], [quat((0, 0, 1), 0), quat((0, 0, 1), 90)])]]))
+write("anim_time.gltf", anim_doc([{"mesh": 0}], [[(0, "translation", "LINEAR", [0, 1, 1], [(0, 0, 0), (1, 0, 0), (2, 0, 0)])]]))
+write("anim_matrix.gltf", anim_doc([{"mesh": 0, "matrix": [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1]}], [one]))
+write("anim_twice.gltf", anim_doc([{"mesh": 0}], [one + one]))
+write("anim_type.gltf", anim_doc([{"mesh": 0}], [[(0, "rotation", "LINEAR", [0, 1], [(0, 0, 0), (1, 0, 0)])]]))
+write("anim_zero.gltf", anim_doc([{"mesh": 0}], [[(0, "rotation", "LINEAR", [0, 1], [(0, 0, 0, 1), (0, 0, 0, 0)])]]))
+d = anim_doc([{"mesh": 0}], [one]); d["animations"][0]["samplers"][0]["interpolation"] = "SMOOTH"
+write("anim_interp.gltf", d)
+d = anim_doc([{"mesh": 0}], [one]); d["animations"][0]["channels"][0]["target"]["node"] = 3
+write("anim_node.gltf", d)
+# key times without a bufferView (zeros) and a count of 2^26: refused
+# before anything is read (a small file must not make the reader allocate
+# by its count)
+d = anim_doc([{"mesh": 0}], [one]); del d["accessors"][1]["bufferView"]; d["accessors"][1]["count"] = 1 << 26
+write("anim_zeros.gltf", d)
+# extremes inside a key interval, where a bound from a cell's ends alone
+# would miss them (scripts/mutants.txt, G06-G09): a child crossing its
+# parent's origin while the parent turns a quarter; a child carried
+# through y's extreme (90 degrees) by its parent's turn from -18 to 152
+# degrees; a cubic bump; a STEP
+# scale whose last value holds from the animation's last key time on only
+write("anim_inside.gltf", anim_doc([
+    {"children": [1]},
+    {"mesh": 0, "scale": [0.1, 0.1, 0.1]},
+    {"mesh": 0, "scale": [0.1, 0.1, 0.1]},
+    {"mesh": 0, "scale": [0.1, 0.1, 0.1], "translation": [0, 20, 0]},
+    {"children": [5]},
+    {"mesh": 0, "scale": [0.1, 0.1, 0.1], "translation": [5, 0, 0]}], [[
+    (0, "rotation", "LINEAR", [0, 1], [quat((0, 0, 1), 0), quat((0, 0, 1), 90)]),
+    (4, "rotation", "LINEAR", [0, 1], [quat((0, 0, 1), -18), quat((0, 0, 1), 152)]),
+    (1, "translation", "LINEAR", [0, 1], [(-5, 0, 0), (5, 0, 0)]),
+    (2, "translation", "CUBICSPLINE", [0, 1], [(0, 0, 0), (0, 0, 0), (10, 0, 0), (-10, 0, 0), (0, 0, 0), (0, 0, 0)]),
+    (3, "scale", "STEP", [0, 1], [(0.1, 0.1, 0.1), (3, 3, 3)])]], scenes=[{"nodes": [0, 2, 3, 4]}]))
