@@ -119,13 +119,13 @@ $(B)/certbox: tools/certbox/main.c $(SCENESRC) $(GLTFSRC) tools/certbox/scene.h 
 	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) tools/certbox/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
 # the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c)
 GLTFORACLE   := tests/gltf_oracle.c
-$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a
+$(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(TESTUTIL) tests/exact_util.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
-	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
-$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(LIBSRC) $(HEADERS)
+	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(TESTUTIL) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
+$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(TESTUTIL) tests/exact_util.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(LIBSRC) $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) $(INC) -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) $(INC) -Itools/certbox -Itests $< $(GLTFORACLE) $(TESTUTIL) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(PUBCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h

@@ -52,7 +52,7 @@ suite() {
   if [ "$name" = gltf ]; then
     G="-DCBX_GLTF -Itools/certbox"
     # shellcheck disable=SC2086
-    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c tools/certbox/gltf.c $LIB -static -ljansson -lmpfr -lgmp -lm -o $B/test_gltf
+    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c tests/exact_util.c tests/proj_oracle.c tools/certbox/gltf.c $LIB -static -ljansson -lmpfr -lgmp -lm -o $B/test_gltf
     # shellcheck disable=SC2086
     $XCC $F $G tools/certbox/main.c tools/certbox/scene.c tools/certbox/gltf.c $LIB -static -ljansson -lm -o $B/certbox
     ./build/test_gltf $GLTFDIR tests/data/gltf build/certbox "$GLTF_N" > $B/$name.host.txt 2>&1 || true

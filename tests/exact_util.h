@@ -46,6 +46,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <gmp.h>
+#include <mpfr.h>
 #include "certbox.h"
 
 /* Every double is k * 2^-1074 (k integer), so a product of two is a
@@ -408,5 +409,22 @@ unsigned long long xu_arg_num(int argc, char **argv, int n, unsigned long long d
 #define XU_ROW(a, b, c, t) { a, b, c, t }
 #define XU_MAT(r0, r1, r2) { { r0, r1, r2 } }
 #define XU_BOX(l0, h0, l1, h1, l2, h2) { { l0, l1, l2 }, { h0, h1, h2 } }
+
+/* The slerp (or nlerp) oracle of the rotation-motion tests (test_trs,
+ * test_scene, test_gltf).  xu_slerp_keys: the unit quaternions q0/|q0|
+ * and q1/|q1|, q1 negated when the exact q0.q1 is negative (arc = +1 or -1
+ * forces the sign instead: the two arcs of a tie; dot_neg records the
+ * exact sign), and the angle th between them, all in MPFR at the
+ * precision given to xu_slerp_init.  xu_slerp_at: the unit quaternion at
+ * s, (sin((1-s) th) q0 + sin(s th) q1) / sin th, or (1-s) q0 + s q1 for
+ * nlerp or th < 2^-200, normalised; q[] at the caller's precision. */
+typedef struct xu_slerp {
+    mpfr_t q0[4], q1[4], th, sth, w0, w1, n;
+    int nlerp, small, dot_neg;
+} xu_slerp;
+void xu_slerp_init(xu_slerp *e, mpfr_prec_t prec);
+void xu_slerp_clear(xu_slerp *e);
+void xu_slerp_keys(xu_slerp *e, const double q0[4], const double q1[4], int nlerp, int arc);
+void xu_slerp_at(xu_slerp *e, mpfr_srcptr s, mpfr_t q[4]);
 
 #endif /* EXACT_UTIL_H */

@@ -51,6 +51,7 @@
 #include <time.h>
 #include "gltf.h"
 #include "gltf_oracle.h"
+#include "exact_util.h"
 
 
 static long n_fail;
@@ -394,42 +395,23 @@ static void anim_value(const gl_sampler *M, double t, int arc, mpq_t out[4])
         for (int j = 0; j < 3; j++) {
             mpq_set_d(x, a[j]); mpq_set_d(y, b[j]); mpq_sub(y, y, x); mpq_mul(y, y, u); mpq_add(out[j], x, y);
         }
-    } else {
-        mpfr_t qa[4], qb[4], na, nb, dot, th, s0, s1, sn, uu, tmp;
-        mpfr_inits2(256, na, nb, dot, th, s0, s1, sn, uu, tmp, (mpfr_ptr)0);
-        for (int j = 0; j < 4; j++) { mpfr_init2(qa[j], 256); mpfr_init2(qb[j], 256); mpfr_set_d(qa[j], a[j], MPFR_RNDN); mpfr_set_d(qb[j], b[j], MPFR_RNDN); }
-        double dd = 0.0;
-        mpq_set_ui(x, 0, 1);
-        for (int j = 0; j < 4; j++) { mpq_set_d(y, a[j]); mpq_set_d(D, b[j]); mpq_mul(y, y, D); mpq_add(x, x, y); }
-        dd = mpq_sgn(x);
-        mpfr_set_ui(na, 0, MPFR_RNDN); mpfr_set_ui(nb, 0, MPFR_RNDN);
-        for (int j = 0; j < 4; j++) { mpfr_fma(na, qa[j], qa[j], na, MPFR_RNDN); mpfr_fma(nb, qb[j], qb[j], nb, MPFR_RNDN); }
-        mpfr_sqrt(na, na, MPFR_RNDN); mpfr_sqrt(nb, nb, MPFR_RNDN);
-        for (int j = 0; j < 4; j++) {
-            mpfr_div(qa[j], qa[j], na, MPFR_RNDN);
-            mpfr_div(qb[j], qb[j], nb, MPFR_RNDN);
-            if (dd < 0 || (dd == 0 && arc)) mpfr_neg(qb[j], qb[j], MPFR_RNDN);   /* the shorter arc */
+    } else {                                      /* exact_util's slerp oracle */
+        xu_slerp sl;
+        mpfr_t uu, q[4];
+        xu_slerp_init(&sl, 256);
+        mpfr_init2(uu, 256);
+        for (int j = 0; j < 4; j++) mpfr_init2(q[j], 256);
+        xu_slerp_keys(&sl, a, b, 0, arc ? -1 : 0);
+        if (arc && !sl.dot_neg) {                 /* the other arc only at a tie */
+            mpq_set_ui(x, 0, 1);
+            for (int j = 0; j < 4; j++) { mpq_set_d(y, a[j]); mpq_set_d(D, b[j]); mpq_mul(y, y, D); mpq_add(x, x, y); }
+            if (mpq_sgn(x) != 0) xu_slerp_keys(&sl, a, b, 0, 0);
         }
-        mpfr_set_ui(dot, 0, MPFR_RNDN);
-        for (int j = 0; j < 4; j++) mpfr_fma(dot, qa[j], qb[j], dot, MPFR_RNDN);
-        if (mpfr_cmp_ui(dot, 1) > 0) mpfr_set_ui(dot, 1, MPFR_RNDN);
-        mpfr_acos(th, dot, MPFR_RNDN);
         mpfr_set_q(uu, u, MPFR_RNDN);
-        mpfr_sin(sn, th, MPFR_RNDN);
-        if (mpfr_zero_p(sn)) {
-            for (int j = 0; j < 4; j++) mpfr_get_q(out[j], qa[j]);
-        } else {
-            mpfr_ui_sub(tmp, 1, uu, MPFR_RNDN); mpfr_mul(tmp, tmp, th, MPFR_RNDN); mpfr_sin(s0, tmp, MPFR_RNDN);
-            mpfr_mul(tmp, uu, th, MPFR_RNDN); mpfr_sin(s1, tmp, MPFR_RNDN);
-            for (int j = 0; j < 4; j++) {
-                mpfr_mul(tmp, s0, qa[j], MPFR_RNDN);
-                mpfr_fma(tmp, s1, qb[j], tmp, MPFR_RNDN);
-                mpfr_div(tmp, tmp, sn, MPFR_RNDN);
-                mpfr_get_q(out[j], tmp);
-            }
-        }
-        for (int j = 0; j < 4; j++) { mpfr_clear(qa[j]); mpfr_clear(qb[j]); }
-        mpfr_clears(na, nb, dot, th, s0, s1, sn, uu, tmp, (mpfr_ptr)0);
+        xu_slerp_at(&sl, uu, q);
+        for (int j = 0; j < 4; j++) { mpfr_get_q(out[j], q[j]); mpfr_clear(q[j]); }
+        mpfr_clear(uu);
+        xu_slerp_clear(&sl);
     }
     mpq_clears(u, D, x, y, h[0], h[1], h[2], h[3], NULL);
 }

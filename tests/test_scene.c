@@ -190,58 +190,18 @@ static void check_leaf(const sc_leaf *L, const qmap *W, stats *st, const char *f
  * below any rounding the tool's bound must cover). */
 static void trs_map(const cbx_trs *k0, const cbx_trs *k1, int nlerp, const mpq_t tm, qmap *out)
 {
-    mpfr_t a[4], b[4], q[4], d, th, w0, w1, n, t, x;
-    mpq_t dq, pq, one_m, sq, tq;
+    mpfr_t q[4], d, t, x;
+    mpq_t one_m, sq, tq;
+    xu_slerp sl;
     int i, j;
-    mpfr_inits2(300, d, th, w0, w1, n, t, x, (mpfr_ptr)0);
-    for (i = 0; i < 4; i++) mpfr_inits2(300, a[i], b[i], q[i], (mpfr_ptr)0);
-    mpq_inits(dq, pq, one_m, sq, tq, NULL);
-    /* the exact sign of q0.q1 */
-    for (i = 0; i < 4; i++) {
-        mpq_set_d(pq, k0->q[i]);
-        mpq_set_d(tq, k1->q[i]);
-        mpq_mul(pq, pq, tq);
-        mpq_add(dq, dq, pq);
-    }
-    for (int k = 0; k < 2; k++) {
-        const cbx_trs *K = k ? k1 : k0;
-        mpfr_set_ui(n, 0, MPFR_RNDN);
-        for (i = 0; i < 4; i++) {
-            mpfr_set_d(k ? b[i] : a[i], K->q[i], MPFR_RNDN);
-            mpfr_fma(n, k ? b[i] : a[i], k ? b[i] : a[i], n, MPFR_RNDN);
-        }
-        mpfr_sqrt(n, n, MPFR_RNDN);
-        for (i = 0; i < 4; i++) {
-            if (k) mpfr_div(b[i], b[i], n, MPFR_RNDN);
-            else mpfr_div(a[i], a[i], n, MPFR_RNDN);
-        }
-    }
-    if (mpq_sgn(dq) < 0)
-        for (i = 0; i < 4; i++) mpfr_neg(b[i], b[i], MPFR_RNDN);
-    mpfr_set_ui(d, 0, MPFR_RNDN);
-    for (i = 0; i < 4; i++) mpfr_fma(d, a[i], b[i], d, MPFR_RNDN);
-    if (mpfr_cmp_ui(d, 1) > 0) mpfr_set_ui(d, 1, MPFR_RNDN);
-    mpfr_acos(th, d, MPFR_RNDN);
+    mpfr_inits2(300, d, t, x, (mpfr_ptr)0);
+    for (i = 0; i < 4; i++) mpfr_init2(q[i], 300);
+    mpq_inits(one_m, sq, tq, NULL);
+    xu_slerp_init(&sl, 300);
+    xu_slerp_keys(&sl, k0->q, k1->q, nlerp, 0);
     mpfr_set_q(t, tm, MPFR_RNDN);
-    mpfr_ui_sub(w0, 1, t, MPFR_RNDN);
-    mpfr_set(w1, t, MPFR_RNDN);
-    if (!nlerp && mpfr_cmp_d(th, 0x1p-200) > 0) {
-        mpfr_sin(x, th, MPFR_RNDN);
-        mpfr_mul(w0, w0, th, MPFR_RNDN);
-        mpfr_sin(w0, w0, MPFR_RNDN);
-        mpfr_div(w0, w0, x, MPFR_RNDN);
-        mpfr_mul(w1, t, th, MPFR_RNDN);
-        mpfr_sin(w1, w1, MPFR_RNDN);
-        mpfr_div(w1, w1, x, MPFR_RNDN);
-    }
-    mpfr_set_ui(n, 0, MPFR_RNDN);
-    for (i = 0; i < 4; i++) {
-        mpfr_mul(q[i], a[i], w0, MPFR_RNDN);
-        mpfr_fma(q[i], b[i], w1, q[i], MPFR_RNDN);
-        mpfr_fma(n, q[i], q[i], n, MPFR_RNDN);
-    }
-    mpfr_sqrt(n, n, MPFR_RNDN);
-    for (i = 0; i < 4; i++) mpfr_div(q[i], q[i], n, MPFR_RNDN);
+    xu_slerp_at(&sl, t, q);
+    xu_slerp_clear(&sl);
     /* R (unit quaternion (x, y, z, w)), then the columns scaled by S */
     {
         static const int sq_a[3][2] = {{1, 2}, {0, 2}, {0, 1}};
@@ -283,9 +243,9 @@ static void trs_map(const cbx_trs *k0, const cbx_trs *k1, int nlerp, const mpq_t
             mpq_add(out->m[i][3], sq, tq);
         }
     }
-    mpq_clears(dq, pq, one_m, sq, tq, NULL);
-    for (i = 0; i < 4; i++) mpfr_clears(a[i], b[i], q[i], (mpfr_ptr)0);
-    mpfr_clears(d, th, w0, w1, n, t, x, (mpfr_ptr)0);
+    mpq_clears(one_m, sq, tq, NULL);
+    for (i = 0; i < 4; i++) mpfr_clear(q[i]);
+    mpfr_clears(d, t, x, (mpfr_ptr)0);
 }
 
 /* The exact map of node n (its operations composed, motion at time s). */

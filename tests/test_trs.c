@@ -85,19 +85,18 @@ static void check(int ok, const char *what, long pair)
 /* ---- the exact motion (MPFR) ------------------------------------------- */
 
 typedef struct exact {
-    mpfr_t q0[4], q1[4], q[4], th, sth, w0, w1, t1, t2, R[3][3], x, y, acc, T[3], SC[3][2];
-    int nlerp;
-    int small;
-    int dot_neg;
+    xu_slerp sl;                      /* the keys' quaternions and angle */
+    mpfr_t q[4], t1, t2, R[3][3], T[3], SC[3][2];
 } exact;
 
 static void ex_init(exact *e)
 {
     int i, j;
+    xu_slerp_init(&e->sl, PREC);
     for (i = 0; i < 4; i++) {
-        mpfr_inits2(PREC, e->q0[i], e->q1[i], e->q[i], (mpfr_ptr)0);
+        mpfr_init2(e->q[i], PREC);
     }
-    mpfr_inits2(PREC, e->th, e->sth, e->w0, e->w1, e->t1, e->t2, e->x, e->y, e->acc, (mpfr_ptr)0);
+    mpfr_inits2(PREC, e->t1, e->t2, (mpfr_ptr)0);
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             mpfr_init2(e->R[i][j], PREC);
@@ -109,10 +108,11 @@ static void ex_init(exact *e)
 static void ex_clear(exact *e)
 {
     int i, j;
+    xu_slerp_clear(&e->sl);
     for (i = 0; i < 4; i++) {
-        mpfr_clears(e->q0[i], e->q1[i], e->q[i], (mpfr_ptr)0);
+        mpfr_clear(e->q[i]);
     }
-    mpfr_clears(e->th, e->sth, e->w0, e->w1, e->t1, e->t2, e->x, e->y, e->acc, (mpfr_ptr)0);
+    mpfr_clears(e->t1, e->t2, (mpfr_ptr)0);
     for (i = 0; i < 3; i++) {
         for (j = 0; j < 3; j++) {
             mpfr_clear(e->R[i][j]);
@@ -122,84 +122,16 @@ static void ex_clear(exact *e)
 }
 
 /* Normalised keyframe quaternions, q1 on the shorter arc (sign = +1 / -1
- * forces the arc: used for the ties). */
+ * forces the arc: used for the ties): exact_util's slerp oracle. */
 static void ex_keys(exact *e, const cbx_trs *k0, const cbx_trs *k1, int nlerp, int sign)
 {
-    int i;
-    mpfr_set_ui(e->x, 0, MPFR_RNDN);
-    mpfr_set_ui(e->y, 0, MPFR_RNDN);
-    for (i = 0; i < 4; i++) {
-        mpfr_set_d(e->q0[i], k0->q[i], MPFR_RNDN);
-        mpfr_set_d(e->q1[i], k1->q[i], MPFR_RNDN);
-        mpfr_fma(e->x, e->q0[i], e->q0[i], e->x, MPFR_RNDN);
-        mpfr_fma(e->y, e->q1[i], e->q1[i], e->y, MPFR_RNDN);
-    }
-    mpfr_sqrt(e->x, e->x, MPFR_RNDN);
-    mpfr_sqrt(e->y, e->y, MPFR_RNDN);
-    for (i = 0; i < 4; i++) {
-        mpfr_div(e->q0[i], e->q0[i], e->x, MPFR_RNDN);
-        mpfr_div(e->q1[i], e->q1[i], e->y, MPFR_RNDN);
-    }
-    /* the exact sign of q0.q1: every product of two doubles and their sum
-     * are exact at 2400 bits */
-    {
-        mpfr_t d, t;
-        int neg;
-        mpfr_inits2(2400, d, t, (mpfr_ptr)0);
-        mpfr_set_ui(d, 0, MPFR_RNDN);
-        for (i = 0; i < 4; i++) {
-            mpfr_set_d(t, k0->q[i], MPFR_RNDN);
-            mpfr_mul_d(t, t, k1->q[i], MPFR_RNDN);
-            mpfr_add(d, d, t, MPFR_RNDN);
-        }
-        neg = mpfr_sgn(d) < 0;
-        mpfr_clears(d, t, (mpfr_ptr)0);
-        e->dot_neg = neg;
-    }
-    if ((sign == 0 && e->dot_neg) || sign < 0) {
-        for (i = 0; i < 4; i++) {
-            mpfr_neg(e->q1[i], e->q1[i], MPFR_RNDN);
-        }
-    }
-    mpfr_set_ui(e->acc, 0, MPFR_RNDN);
-    for (i = 0; i < 4; i++) {
-        mpfr_fma(e->acc, e->q0[i], e->q1[i], e->acc, MPFR_RNDN);
-    }
-    if (mpfr_cmp_ui(e->acc, 1) > 0) {
-        mpfr_set_ui(e->acc, 1, MPFR_RNDN);
-    }
-    mpfr_acos(e->th, e->acc, MPFR_RNDN);
-    mpfr_sin(e->sth, e->th, MPFR_RNDN);
-    e->small = mpfr_cmp_d(e->th, 0x1p-200) < 0;
-    e->nlerp = nlerp;
+    xu_slerp_keys(&e->sl, k0->q, k1->q, nlerp, sign);
 }
 
 /* R at time s (an mpfr value). */
 static void ex_rot(exact *e, const mpfr_t s)
 {
-    int i;
-    if (e->nlerp || e->small) {
-        mpfr_ui_sub(e->w0, 1, s, MPFR_RNDN);
-        mpfr_set(e->w1, s, MPFR_RNDN);
-    } else {
-        mpfr_ui_sub(e->w0, 1, s, MPFR_RNDN);
-        mpfr_mul(e->w0, e->w0, e->th, MPFR_RNDN);
-        mpfr_sin(e->w0, e->w0, MPFR_RNDN);
-        mpfr_div(e->w0, e->w0, e->sth, MPFR_RNDN);
-        mpfr_mul(e->w1, s, e->th, MPFR_RNDN);
-        mpfr_sin(e->w1, e->w1, MPFR_RNDN);
-        mpfr_div(e->w1, e->w1, e->sth, MPFR_RNDN);
-    }
-    mpfr_set_ui(e->acc, 0, MPFR_RNDN);
-    for (i = 0; i < 4; i++) {
-        mpfr_mul(e->q[i], e->q0[i], e->w0, MPFR_RNDN);
-        mpfr_fma(e->q[i], e->q1[i], e->w1, e->q[i], MPFR_RNDN);
-        mpfr_fma(e->acc, e->q[i], e->q[i], e->acc, MPFR_RNDN);
-    }
-    mpfr_sqrt(e->acc, e->acc, MPFR_RNDN);
-    for (i = 0; i < 4; i++) {
-        mpfr_div(e->q[i], e->q[i], e->acc, MPFR_RNDN);
-    }
+    xu_slerp_at(&e->sl, s, e->q);
     {
         mpfr_ptr x = e->q[0], y = e->q[1], z = e->q[2], w = e->q[3];
         /* R = [[1-2(yy+zz), 2(xy-zw), 2(xz+yw)], [2(xy+zw), 1-2(xx+zz), 2(yz-xw)],
