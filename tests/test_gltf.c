@@ -78,6 +78,7 @@ typedef struct stats {
     double round_mm, round_v;           /* max relative excess over the exact image of the box mapped */
     double excess_mm, excess_v;         /* ... over the exact hull of the mapped vertices */
     long anim_files, anim_keys, anim_poses, anim_checks, anim_axes;   /* --animated */
+    long anim_only, anim_only_refused;  /* --animation k loads; out-of-range k refused */
     double anim_excess, anim_excess_sum, anim_excess4;
 } stats;
 
@@ -456,6 +457,8 @@ static double check_anim(const gl_doc *d, const char *file, stats *st)
     unsigned long long rs = 12345;
     for (int a = 0; a < d->nanim; a++) {
         const gl_anim *G = &d->anims[a];
+        if (d->only_anim >= 0 && a != d->only_anim)
+            continue;
         /* the animation's key times, sorted */
         int nt = 0;
         double *tau = NULL;
@@ -691,6 +694,27 @@ static void run_file(const char *path, const char *label, const char *kind, cons
                          label, e, GLTF_ANIM_CELLS, ANIM_MAX_EXCESS, e4, 4 * GLTF_ANIM_CELLS);
                 if (e4 > st->anim_excess4) st->anim_excess4 = e4;
             }
+            /* --animation k: each animation alone, its poses inside, its
+             * boxes inside those of all animations (same cells) */
+            for (int k = 0; ; k++) {
+                gl_doc all, one;
+                if (gltf_load(&one, path, GLTF_ANIMATED | GLTF_ANIM_ONLY(k), NULL, err, sizeof err) != 0) {
+                    if (!strstr(err, "--animation")) FAIL("%s: --animation %d: %s\n", label, k, err);
+                    st->anim_only_refused += k > 0;
+                    break;
+                }
+                (void)check_anim(&one, label, st);
+                if (gltf_load(&all, path, GLTF_ANIMATED, NULL, err, sizeof err) == 0) {
+                    for (int l = 0; l < one.nl && l < all.nl; l++)
+                        for (int i = 0; i < 3; i++)
+                            if (one.leaves[l].world.lo[i] < all.leaves[l].world.lo[i]
+                                || one.leaves[l].world.hi[i] > all.leaves[l].world.hi[i])
+                                FAIL("%s: --animation %d: leaf %d axis %d outside the all-animations box\n", label, k, l, i);
+                    gltf_free(&all);
+                }
+                gltf_free(&one);
+                st->anim_only++;
+            }
             /* coarse cells: wide enclosures, the same containment */
             for (int n = 1; n <= 3; n += 2) {
                 if (gltf_load(&d, path, GLTF_ANIMATED | GLTF_CELLS(n), NULL, err, sizeof err) != 0) {
@@ -790,9 +814,11 @@ int main(int argc, char **argv)
            "  the box it maps (rounding only): %.3g with min/max boxes, %.3g with --from-vertices\n"
            "  the exact hull of the mapped vertices (rounding + boxing in local coordinates + loose min/max): %.3g with min/max, %.3g with --from-vertices\n",
            st.round_mm, st.round_v, st.excess_mm, st.excess_v);
-    printf("test_gltf: --animated: %ld loads (each file at 1, 3, 32 and 128 cells per key interval), %ld animation keys read as written, %ld poses (key times, %d random times between "
+    printf("test_gltf: --animated: %ld loads (each file at 1, 3, 32 and 128 cells per key interval, and each animation alone), %ld animation keys read as written, %ld poses (key times, %d random times between "
            "each two, times before and after), %ld instance axes at them inside their boxes (exact maps; slerp in MPFR at 256 bits)\n",
            st.anim_files, st.anim_keys, st.anim_poses, ANIM_T, st.anim_checks);
+    printf("test_gltf: --animated --animation k: %ld single-animation loads checked the same way, each inside the "
+           "all-animations boxes; %ld out-of-range indices refused\n", st.anim_only, st.anim_only_refused);
     printf("test_gltf: --animated: excess of a box over the hull of its sampled images, relative to the hull's extent: "
            "max %.3g (at most %g), mean %.3g over %ld axes at %d cells per key interval; max %.3g at %d cells\n",
            st.anim_excess, ANIM_MAX_EXCESS, st.anim_axes ? st.anim_excess_sum / (double)st.anim_axes : 0.0, st.anim_axes,

@@ -1306,6 +1306,8 @@ static int load_anims(ctx *c)
     }
     if (na > INT_MAX / 2)
         return fail(c, "too many animations");
+    if (d->only_anim >= 0 && (size_t)d->only_anim >= na)
+        return fail(c, "/animations: --animation %d: the file has %zu animation%s", d->only_anim, na, na == 1 ? "" : "s");
     d->anims = calloc(na, sizeof *d->anims);
     if (!d->anims)
         return fail(c, "out of memory");
@@ -1642,6 +1644,8 @@ static int anim_bound(ctx *c)
         rc = fail(c, "out of memory");
     for (int a = 0; a < d->nanim && rc == 0; a++) {
         const gl_anim *G = &d->anims[a];
+        if (d->only_anim >= 0 && a != d->only_anim)
+            continue;
         A.G = G;
         for (size_t k = 0; k < 3 * nn; k++) A.chan[k] = -1;
         size_t nt = 0;
@@ -1881,9 +1885,10 @@ int gltf_load(gl_doc *d, const char *path, unsigned opts, FILE *notes, char *err
     c.notes = notes;
     c.fromv = (opts & GLTF_FROM_VERTICES) != 0;
     c.anim = (opts & GLTF_ANIMATED) != 0;
-    d->cells = (int)(opts >> 8);
+    d->cells = (int)((opts >> 8) & 0x1fffu);
     if (d->cells < 1 || d->cells > GLTF_ANIM_CELLS_MAX)
         d->cells = GLTF_ANIM_CELLS;
+    d->only_anim = (int)(opts >> 21) - 1;
     /* the folder that relative URIs may not leave */
     char tmp[PATH_MAX];
     snprintf(tmp, sizeof tmp, "%s", path);
@@ -1929,6 +1934,15 @@ int gltf_main(int argc, char **argv)
                 return 2;
             }
             opts |= GLTF_CELLS(n);
+        }
+        else if (strcmp(argv[k], "--animation") == 0 && k + 1 < argc) {
+            char *e;
+            long n = strtol(argv[++k], &e, 10);
+            if (*e || n < 0 || n > GLTF_ANIM_ONLY_MAX) {
+                fprintf(stderr, "certbox: --animation: '%s' is not an animation index in 0..%d\n", argv[k], GLTF_ANIM_ONLY_MAX);
+                return 2;
+            }
+            opts |= GLTF_ANIM_ONLY(n);
         }
         else if (argv[k][0] != '-' && !path) path = argv[k];
         else return -1;                            /* the caller reports it */

@@ -84,6 +84,10 @@ typedef struct gl_anim { gl_sampler *smp; int nsmp; gl_channel *ch; int nch; } g
  * doubles (docs/gltf.md) */
 #define GLTF_CELLS(n)      ((unsigned)(n) << 8)
 #define GLTF_ANIM_CELLS_MAX 4096
+/* --animated --animation k: only animation k (0 <= k <= GLTF_ANIM_ONLY_MAX)
+ * joins the static pose (an index the file does not have is refused) */
+#define GLTF_ANIM_ONLY(k)  ((unsigned)((k) + 1) << 21)
+#define GLTF_ANIM_ONLY_MAX 2046
 #define GLTF_ANIM_CELLS 32
 
 typedef struct gl_doc {
@@ -96,6 +100,7 @@ typedef struct gl_doc {
     gl_scene *scenes; int ns;
     gl_anim *anims; int nanim;  /* read with GLTF_ANIMATED only */
     int cells;                  /* cells per key interval (GLTF_ANIMATED) */
+    int only_anim;              /* the one animation bounded, or -1: all */
     int notes;                  /* flagged problems (printed on stderr) */
 } gl_doc;
 
@@ -130,7 +135,8 @@ long gltf_sparse_index(const gl_doc *d, int a, long s);
  * vertex is sparse (or the accessor has a bufferView). */
 long gltf_first_zero(const gl_doc *d, int a);
 
-/* The tool: certbox [--json] [--hex] [--from-vertices] [--animated [--cells N]] FILE.gltf|FILE.glb.
+/* The tool: certbox [--json] [--hex] [--from-vertices] [--animated [--cells N] [--animation K]]
+ * FILE.gltf|FILE.glb.
  * Returns the exit status, or -1 if FILE is not glTF (or no FILE given):
  * then the caller goes on with its own formats. */
 int gltf_main(int argc, char **argv);
