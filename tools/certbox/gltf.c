@@ -1916,6 +1916,18 @@ static char *name_json(const gl_doc *d, const char *arr, int k)
     return json_is_string(n) ? json_dumps(n, JSON_ENCODE_ANY) : NULL;
 }
 
+/* option opt's argument s as a whole number in lo..hi, or -1 (said) */
+static long num_arg(const char *opt, const char *s, long lo, long hi)
+{
+    char *e;
+    long n = strtol(s, &e, 10);
+    if (*s == '\0' || *e || n < lo || n > hi) {
+        fprintf(stderr, "certbox: %s: '%s' is not a whole number in %ld..%ld\n", opt, s, lo, hi);
+        return -1;
+    }
+    return n;
+}
+
 int gltf_main(int argc, char **argv)
 {
     int json = 0, hex = 0;
@@ -1927,21 +1939,12 @@ int gltf_main(int argc, char **argv)
         else if (strcmp(argv[k], "--from-vertices") == 0) opts |= GLTF_FROM_VERTICES;
         else if (strcmp(argv[k], "--animated") == 0) opts |= GLTF_ANIMATED;
         else if (strcmp(argv[k], "--cells") == 0 && k + 1 < argc) {
-            char *e;
-            long n = strtol(argv[++k], &e, 10);
-            if (*e || n < 1 || n > GLTF_ANIM_CELLS_MAX) {
-                fprintf(stderr, "certbox: --cells: '%s' is not a whole number in 1..%d\n", argv[k], GLTF_ANIM_CELLS_MAX);
-                return 2;
-            }
+            long n = num_arg("--cells", argv[++k], 1, GLTF_ANIM_CELLS_MAX);
+            if (n < 0) return 2;
             opts |= GLTF_CELLS(n);
-        }
-        else if (strcmp(argv[k], "--animation") == 0 && k + 1 < argc) {
-            char *e;
-            long n = strtol(argv[++k], &e, 10);
-            if (*e || n < 0 || n > GLTF_ANIM_ONLY_MAX) {
-                fprintf(stderr, "certbox: --animation: '%s' is not an animation index in 0..%d\n", argv[k], GLTF_ANIM_ONLY_MAX);
-                return 2;
-            }
+        } else if (strcmp(argv[k], "--animation") == 0 && k + 1 < argc) {
+            long n = num_arg("--animation", argv[++k], 0, GLTF_ANIM_ONLY_MAX);
+            if (n < 0) return 2;
             opts |= GLTF_ANIM_ONLY(n);
         }
         else if (argv[k][0] != '-' && !path) path = argv[k];
