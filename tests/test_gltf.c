@@ -425,7 +425,10 @@ static void anim_value(const gl_sampler *M, double t, int arc, mpq_t out[4])
  * box.  The excess of each box over the hull of those images (relative to
  * the hull's extent per axis) is reported: sampled, so an upper bound on
  * the excess over the exact union. */
-#define ANIM_T 40
+#define ANIM_T 24
+/* set while a file of kind "anim loose" is checked: its excess is not
+ * counted (an exact half turn, both arcs: expect.txt) */
+static int anim_no_stats;
 /* the largest excess accepted at the default cells (measured 2026-11-27:
  * 0.086 on anim_rot.gltf, a box on cubic splines under a turning, moving,
  * scaling parent) */
@@ -472,6 +475,21 @@ static double check_anim(const gl_doc *d, const char *file, stats *st)
         if (nt == 0) { free(tau); continue; }
         for (int x = 1; x < nt; x++)          /* insertion sort: few keys */
             for (int y = x; y > 0 && tau[y] < tau[y - 1]; y--) { double z = tau[y]; tau[y] = tau[y - 1]; tau[y - 1] = z; }
+        /* a LINEAR rotation segment whose keys' dot product is exactly 0
+         * (a half turn: the reader covers both arcs) is sampled on both */
+        int ties = 0;
+        for (int h = 0; h < G->nch; h++) {
+            const gl_sampler *M = &G->smp[G->ch[h].sampler];
+            if (G->ch[h].node < 0 || G->ch[h].path != 1 || M->interp != GL_LINEAR) continue;
+            for (long e = 0; e + 1 < M->n; e++) {
+                mpq_set_ui(lo, 0, 1);
+                for (int j = 0; j < 4; j++) {
+                    mpq_set_d(hi, M->v[4 * e + j]); mpq_set_d(tmp, M->v[4 * e + 4 + j]);
+                    mpq_mul(hi, hi, tmp); mpq_add(lo, lo, hi);
+                }
+                ties += mpq_sgn(lo) == 0;
+            }
+        }
         int ns = 2 + nt * (ANIM_T + 1);
         for (int q = 0; q < ns; q++) {
             double t;
@@ -486,7 +504,7 @@ static double check_anim(const gl_doc *d, const char *file, stats *st)
                     if (t > tau[e + 1]) t = tau[e + 1];
                 }
             }
-            for (int arc = 0; arc < 2; arc++) {
+            for (int arc = 0; arc < 1 + (ties > 0); arc++) {
                 /* maps at t: animated nodes' locals, composed down */
                 for (int k = 0; k < nn; k++) {
                     const gl_node *g = &d->nodes[k];
@@ -549,7 +567,7 @@ static double check_anim(const gl_doc *d, const char *file, stats *st)
             double e = (d->leaves[k].world.hi[i] - hh[k][i] + hl[k][i] - d->leaves[k].world.lo[i]) / w;
             if (e > emax) emax = e;
             if (getenv("ANIM_DEBUG")) printf("excess %s cells %d leaf %s axis %d: %.4g of %.4g\n", file, d->cells, d->leaves[k].path, i, e, w);
-            if (d->cells != GLTF_ANIM_CELLS) continue;
+            if (d->cells != GLTF_ANIM_CELLS || anim_no_stats) continue;
             if (e > st->anim_excess) st->anim_excess = e;
             st->anim_excess_sum += e;
             st->anim_axes++;
@@ -680,6 +698,8 @@ static void run_file(const char *path, const char *label, const char *kind, cons
             FAIL("%s: refused with --animated: %s\n", label, err);
         } else {
             if (d.notes != 0) FAIL("%s: --animated: expected no note, got: %s\n", label, notes);
+            int loose = strstr(asub, "loose") != NULL;   /* containment only */
+            anim_no_stats = loose;
             double e = check_anim(&d, label, st);
             gltf_free(&d);
             /* the excess is first order in the cells' length: 4 times as
@@ -689,10 +709,10 @@ static void run_file(const char *path, const char *label, const char *kind, cons
             } else {
                 double e4 = check_anim(&d, label, st);
                 gltf_free(&d);
-                if (e > ANIM_MAX_EXCESS || e4 > e / 2)
+                if (!loose && (e > ANIM_MAX_EXCESS || e4 > e / 2))
                     FAIL("%s: --animated: excess %.3g at %d cells (at most %g), %.3g at %d (expected at most half)\n",
                          label, e, GLTF_ANIM_CELLS, ANIM_MAX_EXCESS, e4, 4 * GLTF_ANIM_CELLS);
-                if (e4 > st->anim_excess4) st->anim_excess4 = e4;
+                if (!loose && e4 > st->anim_excess4) st->anim_excess4 = e4;
             }
             /* --animation k: each animation alone, its poses inside, its
              * boxes inside those of all animations (same cells) */
@@ -724,6 +744,7 @@ static void run_file(const char *path, const char *label, const char *kind, cons
                 (void)check_anim(&d, label, st);
                 gltf_free(&d);
             }
+            anim_no_stats = 0;
         }
     }
     /* --from-vertices: every file with readable vertices loads (or is
