@@ -630,18 +630,33 @@ static int buffer_view(ctx *c, long long v, const unsigned char **base, size_t *
 }
 
 /* ---- accessors -------------------------------------------------------- */
-/* Accessor ai's members every use reads: *J, its pointer p,
- * componentType, count, bufferView (-1 if absent), byteOffset. */
-static int acc_head(ctx *c, long long ai, char *p, size_t np, json_t **J, long long *ct, long long *cnt,
-                    long long *bv, long long *off)
+/* Accessor ai's members every use reads: its JSON pointer p,
+ * componentType, count, bufferView (-1 if absent), byteOffset, type (a
+ * string) and normalized (a boolean, false if absent). */
+typedef struct acc_info {
+    json_t *J;
+    char p[64];
+    long long ct, cnt, bv, off;
+    const char *type;
+    int norm;
+} acc_info;
+
+static int acc_head(ctx *c, long long ai, acc_info *a)
 {
-    *J = json_array_get(json_object_get(c->root, "accessors"), (size_t)ai);
-    snprintf(p, np, "/accessors/%lld", ai);
-    if (check_common(c, *J, p) != 0 || need_uint(c, *J, "componentType", p, -1, "", ct) != 0
-        || need_uint(c, *J, "count", p, -1, "", cnt) != 0
-        || get_uint(c, *J, "bufferView", p, (long long)c->nbv, "bufferView", -1, bv) < 0
-        || get_uint(c, *J, "byteOffset", p, -1, "", 0, off) < 0)
+    a->J = json_array_get(json_object_get(c->root, "accessors"), (size_t)ai);
+    snprintf(a->p, sizeof a->p, "/accessors/%lld", ai);
+    if (check_common(c, a->J, a->p) != 0 || need_uint(c, a->J, "componentType", a->p, -1, "", &a->ct) != 0
+        || need_uint(c, a->J, "count", a->p, -1, "", &a->cnt) != 0
+        || get_uint(c, a->J, "bufferView", a->p, (long long)c->nbv, "bufferView", -1, &a->bv) < 0
+        || get_uint(c, a->J, "byteOffset", a->p, -1, "", 0, &a->off) < 0)
         return -1;
+    json_t *ty = json_object_get(a->J, "type"), *nz = json_object_get(a->J, "normalized");
+    if (!json_is_string(ty))
+        return fail(c, "%s/type: missing or not a string", a->p);
+    if (nz && !json_is_boolean(nz))
+        return fail(c, "%s/normalized: must be true or false", a->p);
+    a->type = json_string_value(ty);
+    a->norm = nz && json_is_true(nz);
     return 0;
 }
 
@@ -747,19 +762,15 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     gl_acc *A = &d->accs[ai];
     if (role == 0 && A->used)
         return 0;
-    json_t *J;
-    char p[64];
-    long long ct, cnt, bv, off;
-    if (acc_head(c, ai, p, sizeof p, &J, &ct, &cnt, &bv, &off) != 0)
+    acc_info I;
+    if (acc_head(c, ai, &I) != 0)
         return -1;
-    json_t *ty = json_object_get(J, "type"), *nz = json_object_get(J, "normalized");
-    if (!json_is_string(ty))
-        return fail(c, "%s/type: missing or not a string", p);
-    if (nz && !json_is_boolean(nz))
-        return fail(c, "%s/normalized: must be true or false", p);
+    json_t *J = I.J;
+    const char *p = I.p;
+    long long ct = I.ct, cnt = I.cnt, bv = I.bv, off = I.off;
     if (cnt < 1 || cnt > INT32_MAX)
         return fail(c, "%s/count: %lld is outside 1..2^31-1", p, cnt);
-    const char *t = json_string_value(ty);
+    const char *t = I.type;
     int ncomp = role == 0 ? 3 : 1;
     if (role == 0 && (strcmp(t, "VEC3") != 0 || !(ct == 5126 || (ct >= 5120 && ct <= 5123))))
         return fail(c, "%s: a POSITION accessor must be VEC3 of FLOAT (5126), or of the KHR_mesh_quantization "
@@ -772,7 +783,7 @@ static int check_accessor(ctx *c, long long ai, int role, long long nvert)
     if (acc_data(c, p, bv, off, cnt, es, &base, &stride) != 0)
         return -1;
     A->ctype = (int)ct;
-    A->normalized = nz && json_is_true(nz);
+    A->normalized = I.norm;
     A->count = (long)cnt;
     A->base = base;
     A->stride = stride;
@@ -1244,21 +1255,20 @@ void gltf_free(gl_doc *d)
 static int anim_acc(ctx *c, long long ai, const char *ptr, const char *type, int ncomp, int ints, long want,
                     double **out, long *count)
 {
-    json_t *J;
-    char p[64];
-    long long ct, cnt, bv, off;
-    if (acc_head(c, ai, p, sizeof p, &J, &ct, &cnt, &bv, &off) != 0)
+    acc_info I;
+    if (acc_head(c, ai, &I) != 0)
         return -1;
-    json_t *ty = json_object_get(J, "type"), *nz = json_object_get(J, "normalized");
-    int norm = nz && json_is_true(nz);
-    if (!json_is_string(ty) || strcmp(json_string_value(ty), type) != 0)
+    const char *p = I.p;
+    long long ct = I.ct, cnt = I.cnt, bv = I.bv, off = I.off;
+    int norm = I.norm;
+    if (strcmp(I.type, type) != 0)
         return fail(c, "%s (%s): must be of type %s", p, ptr, type);
     if (!(ct == 5126 || (ints && norm && ct >= 5120 && ct <= 5123)))
         return fail(c, "%s (%s): must be FLOAT (5126)%s; this one is %lld", p, ptr,
                     ints ? ", or normalized 5120..5123" : "", ct);
     if (cnt < 1 || cnt > INT32_MAX / 12)
         return fail(c, "%s/count: %lld is outside 1..%d", p, cnt, INT32_MAX / 12);
-    if (json_object_get(J, "sparse"))
+    if (json_object_get(I.J, "sparse"))
         return fail(c, "%s (%s): a sparse animation accessor is not read", p, ptr);
     size_t es = (size_t)ncomp * (size_t)csize((int)ct), stride = es;
     const unsigned char *base = NULL;
