@@ -351,6 +351,17 @@ static void check_extras(const gl_doc *d, const char *file, stats *st)
         }
 }
 
+/* the exact sign of the dot product of two stored quaternions */
+static int dot_sign(const double *a, const double *b)
+{
+    mpq_t d, x, y;
+    mpq_inits(d, x, y, NULL);
+    for (int j = 0; j < 4; j++) { mpq_set_d(x, a[j]); mpq_set_d(y, b[j]); mpq_mul(x, x, y); mpq_add(d, d, x); }
+    int sg = mpq_sgn(d);
+    mpq_clears(d, x, y, NULL);
+    return sg;
+}
+
 /* The value of sampler M at time t: exact for translation and scale (and
  * for STEP and CUBICSPLINE rotations); slerp in MPFR at 256 bits, taken as
  * a rational (its rotation matrix then within 2^-250 of the exact one).
@@ -402,12 +413,7 @@ static void anim_value(const gl_sampler *M, double t, int arc, mpq_t out[4])
         xu_slerp_init(&sl, 256);
         mpfr_init2(uu, 256);
         for (int j = 0; j < 4; j++) mpfr_init2(q[j], 256);
-        xu_slerp_keys(&sl, a, b, 0, arc ? -1 : 0);
-        if (arc && !sl.dot_neg) {                 /* the other arc only at a tie */
-            mpq_set_ui(x, 0, 1);
-            for (int j = 0; j < 4; j++) { mpq_set_d(y, a[j]); mpq_set_d(D, b[j]); mpq_mul(y, y, D); mpq_add(x, x, y); }
-            if (mpq_sgn(x) != 0) xu_slerp_keys(&sl, a, b, 0, 0);
-        }
+        xu_slerp_keys(&sl, a, b, 0, arc && dot_sign(a, b) == 0 ? -1 : 0);   /* the other arc only at a tie */
         mpfr_set_q(uu, u, MPFR_RNDN);
         xu_slerp_at(&sl, uu, q);
         for (int j = 0; j < 4; j++) { mpfr_get_q(out[j], q[j]); mpfr_clear(q[j]); }
@@ -481,14 +487,8 @@ static double check_anim(const gl_doc *d, const char *file, stats *st)
         for (int h = 0; h < G->nch; h++) {
             const gl_sampler *M = &G->smp[G->ch[h].sampler];
             if (G->ch[h].node < 0 || G->ch[h].path != 1 || M->interp != GL_LINEAR) continue;
-            for (long e = 0; e + 1 < M->n; e++) {
-                mpq_set_ui(lo, 0, 1);
-                for (int j = 0; j < 4; j++) {
-                    mpq_set_d(hi, M->v[4 * e + j]); mpq_set_d(tmp, M->v[4 * e + 4 + j]);
-                    mpq_mul(hi, hi, tmp); mpq_add(lo, lo, hi);
-                }
-                ties += mpq_sgn(lo) == 0;
-            }
+            for (long e = 0; e + 1 < M->n; e++)
+                ties += dot_sign(M->v + 4 * e, M->v + 4 * e + 4) == 0;
         }
         int ns = 2 + nt * (ANIM_T + 1);
         for (int q = 0; q < ns; q++) {
@@ -519,8 +519,6 @@ static double check_anim(const gl_doc *d, const char *file, stats *st)
                     gx_map L;
                     gx_init(&L);
                     if (anim) gx_trs(&L, T, Q, Sc); else gx_local(&L, g);
-                    (void)anim;
-                    /* parents come first in file order? not necessarily: walk below */
                     for (int i = 0; i < 3; i++) for (int j = 0; j < 4; j++) mpq_set(W[k].m[i][j], L.m[i][j]);
                     W[k].done = 0;
                     gx_clear(&L);

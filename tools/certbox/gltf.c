@@ -1603,14 +1603,14 @@ static const gl_imat *cell_world(anim_ctx *A, int k, double ca, double cb)
     gl_imat L = g->local;
     const int *ch = A->chan + 3 * (size_t)k;
     if (ch[0] >= 0 || ch[1] >= 0 || ch[2] >= 0) {
-        iv T[3], S[3], R[3][3], dummy[3][3];
+        iv T[3], S[3], R[3][3], dummy[3][3], unused[3];   /* sample_cell's outputs a path does not fill */
         for (int j = 0; j < 3; j++) { T[j] = pt(g->t[j]); S[j] = pt(g->s[j]); }
         if (ch[0] >= 0)
             (void)sample_cell(&A->G->smp[A->G->ch[ch[0]].sampler], ca, cb, T, dummy);
         if (ch[2] >= 0)
             (void)sample_cell(&A->G->smp[A->G->ch[ch[2]].sampler], ca, cb, S, dummy);
         if (ch[1] >= 0)
-            A->lost |= sample_cell(&A->G->smp[A->G->ch[ch[1]].sampler], ca, cb, T, R);
+            A->lost |= sample_cell(&A->G->smp[A->G->ch[ch[1]].sampler], ca, cb, unused, R);
         else
             A->lost |= rot_point(g->r, R);
         for (int i = 0; i < 3; i++) {
