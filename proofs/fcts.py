@@ -7,7 +7,7 @@
                                         the functions of TU that call NAME
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
-proj_f.c).  It is
+proj_f.c, trs.c).  It is
 preprocessed as Frama-C preprocesses it (gcc -E -C -D__FRAMAC__, the
 library's include folders of scripts/incs.sh and specs/); each function
 definition is then attributed to the file the line markers name, under the
@@ -22,6 +22,9 @@ follow the layers of src/:
     f64      binary64-only code: functions of src/f64/*.c, minus split and
              minus the interval-matrix unit's (group imat)
     imat     the interval-matrix unit: src/f64/cbx_imat.c, src/f64/cbx_ikernel.h
+    trs      the proven part of the rotation motion (proofs/trs.c): the
+             interval arithmetic of src/f64/cbx_iv.h and the rotations of
+             quaternion boxes of src/f64/cbx_quat.h
     proj     the projective unit (proofs/proj.c, proj_f.c): functions of
              src/algo/cbx_project.c and src/core/cbx_quot.h, minus split
     projsplit  the same unit's functions marked for -wp-split
@@ -133,6 +136,7 @@ def group(defs, g):
     imat = ('src/f64/cbx_imat.c', 'src/f64/cbx_ikernel.h')
     proj = ('src/algo/cbx_project.c', 'src/core/cbx_quot.h')
     ball = ('src/algo/cbx_sphere.c',)
+    trs = ('src/f64/cbx_iv.h', 'src/f64/cbx_quat.h')
     if g == 'split':
         return [n for f, n, s in defs if s and f not in ball]
     if g == 'kernels':
@@ -141,6 +145,8 @@ def group(defs, g):
         return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat]
     if g == 'imat':
         return [n for f, n, s in defs if f in imat]
+    if g == 'trs':
+        return [n for f, n, s in defs if f in trs]
     if g == 'proj':
         return [n for f, n, s in defs if not s and f in proj]
     if g == 'projsplit':

@@ -18,6 +18,9 @@
 #             postconditions multiplies goals)
 #   I64, SI64 the interval-matrix functions (proofs/imat.c, with the
 #             lemmas of specs/cbx_imat_logic.h) and their smoke tests
+#   T64, ST64 the proven part of the rotation motion (proofs/trs.c): the
+#             interval arithmetic of src/f64/cbx_iv.h, with the lemmas of
+#             specs/cbx_iv_logic.h and cbx_imat_logic.h; its smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
 #             -wp-split; PA64, PA32 its functions marked for -wp-split;
@@ -102,6 +105,8 @@ fcts() { python3 proofs/fcts.py "$@"; }
 case $name in
   I64) TU=proofs/imat.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU imat)" ;;
   SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SG=imat ;;
+  T64) TU=proofs/trs.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU trs)" ;;
+  ST64) TU=proofs/trs.c; OPTS="$SMOKE $NOGOALS"; SG=trs ;;
   P64|P32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS=$WP; SEL="-wp-fct $(fcts $TU proj)" ;;
   PA64|PA32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU projsplit)" ;;
   SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SG=proj,projsplit ;;

@@ -98,6 +98,17 @@ case_ project-lo-rounded-to-nearest src/algo/cbx_project.c proj_corner proofs/pr
 case_ chain-last-map-skipped src/f64/cbx_chain.c cbx_transform_box_chain proofs/all.c contain ensures_contain \
   "    while (k > 0U) {" \
   "    while (k > 1U) {" &
+# 12. the rotation motion's interval product: the least corner product
+#    rounded to nearest, not down (it can exceed the exact product: the
+#    containment postcondition must fail)
+case_ iv-mul-lo-nearest src/f64/cbx_iv.h iv_mul proofs/trs.c c0,c1,c2,c3,ends,lo,in 'ensures_lo\|ensures_in\|assert_c\|assert_ends' \
+  "    r.lo = cbx_add_dn(m, 0.0);" \
+  "    r.lo = m;" - &
+# 13. the interval sum: the lower end moved down twice (still contains the
+#    sum; the tightness postcondition must fail)
+case_ iv-add-lo-twice src/f64/cbx_iv.h iv_add proofs/trs.c near near \
+  "    r.lo = cbx_add_dn(a.lo, b.lo);" \
+  "    r.lo = cbx_add_dn(cbx_add_dn(a.lo, b.lo), -0x1p-1000);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -20,11 +20,16 @@
  * interval product R_ij S_j, column 3 T_i), and the box by
  * cbx_transform_box_imat (proven); the result is the hull over the cells.
  *
- * The interval arithmetic below rounds outward through the proven
- * primitives (cbx_add_dn / cbx_add_up: below / above the exact sum by more
- * than one rounding of its first argument; cbx_div_dn / cbx_div_up), and
- * is tested against MPFR (tests/test_trs.c); it has no ACSL proof yet
- * (proofs/README.md, "Tested, not proven").
+ * Proven (job T64, proofs/trs.c): the interval arithmetic
+ * (src/f64/cbx_iv.h: sums, products, squares, square roots, quotients and
+ * the linear paths of T and S, each containing the exact result for every
+ * real point of its operands, each end within a stated bound of the exact
+ * end) and the rotation matrices of a box of unit quaternions
+ * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box).
+ * Tested only (tests/test_trs.c, against MPFR): what remains in this file,
+ * the quaternion path (normalisation, bisection, the arc box, the choice
+ * of the shorter arc) and the cells' loop (proofs/README.md, "Rotation
+ * motion").
  */
 #include <stdint.h>
 
@@ -32,117 +37,10 @@
 #include "cbx_round.h"
 #include "cbx_quot.h"
 #include "cbx_domain.h"
+#include "cbx_iv.h"
+#include "cbx_quat.h"
 
 #define TRS_MAX_DEPTH 16U
-
-/* An interval [lo, hi] of reals. */
-typedef struct trs_iv {
-    double lo;
-    double hi;
-} trs_iv;
-
-/* A box of R^4 (a quaternion known up to an interval per component). */
-typedef struct trs_q { trs_iv c[4]; } trs_q;
-
-/* ---- outward-rounded interval arithmetic -------------------------------- */
-
-/* x (one rounded-to-nearest result, or a double) moved below (above) the
- * exact value it rounds, by cbx_add_dn (cbx_add_up) with t = 0. */
-static double dn(double x) { return cbx_add_dn(x, 0.0); }
-static double up(double x) { return cbx_add_up(x, 0.0); }
-
-static trs_iv iv_pt(double x)
-{
-    trs_iv r;
-    r.lo = x;
-    r.hi = x;
-    return r;
-}
-
-static trs_iv iv_hull(trs_iv a, trs_iv b)
-{
-    trs_iv r;
-    r.lo = cbx_min2(a.lo, b.lo);
-    r.hi = cbx_max2(a.hi, b.hi);
-    return r;
-}
-
-/* a intersected with [-1, 1] (a component of a unit vector, or an entry of
- * a rotation matrix, lies there). */
-static trs_iv iv_unit(trs_iv a)
-{
-    trs_iv r;
-    r.lo = cbx_max2(a.lo, -1.0);
-    r.hi = cbx_min2(a.hi, 1.0);
-    return r;
-}
-
-static trs_iv iv_add(trs_iv a, trs_iv b)
-{
-    trs_iv r;
-    r.lo = cbx_add_dn(a.lo, b.lo);
-    r.hi = cbx_add_up(a.hi, b.hi);
-    return r;
-}
-
-static trs_iv iv_neg(trs_iv a)
-{
-    trs_iv r;
-    r.lo = -a.hi;
-    r.hi = -a.lo;
-    return r;
-}
-
-static trs_iv iv_mul(trs_iv a, trs_iv b)
-{
-    double p0 = a.lo * b.lo;
-    double p1 = a.lo * b.hi;
-    double p2 = a.hi * b.lo;
-    double p3 = a.hi * b.hi;
-    trs_iv r;
-    r.lo = dn(cbx_min2(cbx_min2(p0, p1), cbx_min2(p2, p3)));
-    r.hi = up(cbx_max2(cbx_max2(p0, p1), cbx_max2(p2, p3)));
-    return r;
-}
-
-/* {x^2 : x in a}. */
-static trs_iv iv_sqr(trs_iv a)
-{
-    double l2 = a.lo * a.lo;
-    double h2 = a.hi * a.hi;
-    trs_iv r;
-    if (a.lo >= 0.0) {
-        r.lo = dn(l2);
-        r.hi = up(h2);
-    } else if (a.hi <= 0.0) {
-        r.lo = dn(h2);
-        r.hi = up(l2);
-    } else {
-        r.lo = 0.0;
-        r.hi = up(cbx_max2(l2, h2));
-    }
-    r.lo = cbx_max2(r.lo, 0.0);
-    return r;
-}
-
-/* {sqrt(x) : x in a, x >= 0}; a.hi >= 0. */
-static trs_iv iv_sqrt(trs_iv a)
-{
-    trs_iv r;
-    r.lo = cbx_max2(dn(cbx_sqrt_rn(cbx_max2(a.lo, 0.0))), 0.0);
-    r.hi = up(cbx_sqrt_rn(a.hi));
-    return r;
-}
-
-/* {x / y : x in a, y in b}; b.lo > 0 and the quotients in range (the
- * callers' ranges: |x| <= 2^260, y >= 2^-130). */
-static trs_iv iv_div(trs_iv a, trs_iv b)
-{
-    trs_iv r;
-    r.lo = (a.lo >= 0.0) ? cbx_div_dn(a.lo, b.hi) : cbx_div_dn(a.lo, b.lo);
-    r.hi = (a.hi >= 0.0) ? cbx_div_up(a.hi, b.lo) : cbx_div_up(a.hi, b.hi);
-    return r;
-}
 
 /* ---- quaternions -------------------------------------------------------- */
 
@@ -150,8 +48,8 @@ static trs_iv iv_div(trs_iv a, trs_iv b)
  * boxes have |v| >= 2^-125, or contain a unit vector's neighbourhood). */
 static trs_q q_normalise(const trs_q *v)
 {
-    trs_iv n2 = iv_add(iv_add(iv_sqr(v->c[0]), iv_sqr(v->c[1])), iv_add(iv_sqr(v->c[2]), iv_sqr(v->c[3])));
-    trs_iv n = iv_sqrt(n2);
+    cbx_iv n2 = iv_add(iv_add(iv_sqr(v->c[0]), iv_sqr(v->c[1])), iv_add(iv_sqr(v->c[2]), iv_sqr(v->c[3])));
+    cbx_iv n = iv_sqrt(n2);
     trs_q r;
     int i;
     for (i = 0; i < 4; i++) {
@@ -190,7 +88,7 @@ static trs_q q_hull(const trs_q *a, const trs_q *b)
     return r;
 }
 
-static trs_iv q_dot(const trs_q *a, const trs_q *b)
+static cbx_iv q_dot(const trs_q *a, const trs_q *b)
 {
     return iv_add(iv_add(iv_mul(a->c[0], b->c[0]), iv_mul(a->c[1], b->c[1])),
                   iv_add(iv_mul(a->c[2], b->c[2]), iv_mul(a->c[3], b->c[3])));
@@ -199,8 +97,8 @@ static trs_iv q_dot(const trs_q *a, const trs_q *b)
 /* (1 - s) a + s b for the real s of a double in [0, 1]. */
 static trs_q q_blend(const trs_q *a, const trs_q *b, double s)
 {
-    trs_iv w0 = iv_add(iv_pt(1.0), iv_pt(-s));
-    trs_iv w1 = iv_pt(s);
+    cbx_iv w0 = iv_add(iv_pt(1.0), iv_pt(-s));
+    cbx_iv w1 = iv_pt(s);
     trs_q r;
     int i;
     for (i = 0; i < 4; i++) {
@@ -215,7 +113,7 @@ static trs_q q_blend(const trs_q *a, const trs_q *b, double s)
  * not clearly positive. */
 static trs_q q_arc_box(const trs_q *a, const trs_q *b)
 {
-    trs_iv den = iv_add(iv_pt(1.0), q_dot(a, b));
+    cbx_iv den = iv_add(iv_pt(1.0), q_dot(a, b));
     trs_q r = q_hull(a, b);
     int i;
     if (!(den.lo >= 0.5)) {
@@ -226,55 +124,10 @@ static trs_q q_arc_box(const trs_q *a, const trs_q *b)
         return r;
     }
     for (i = 0; i < 4; i++) {
-        trs_iv m = iv_div(iv_add(a->c[i], b->c[i]), den);
+        cbx_iv m = iv_div(iv_add(a->c[i], b->c[i]), den);
         r.c[i] = iv_unit(iv_hull(r.c[i], m));
     }
     return r;
-}
-
-/* The rotation matrix of every unit quaternion (x, y, z, w) of the box:
- * R = I - 2 [[y2+z2, zw-xy, -(xz+yw)], ...] written entry by entry. */
-static void q_rotation(const trs_q *q, trs_iv r[3][3])
-{
-    trs_iv x = q->c[0];
-    trs_iv y = q->c[1];
-    trs_iv z = q->c[2];
-    trs_iv w = q->c[3];
-    trs_iv xx = iv_sqr(x);
-    trs_iv yy = iv_sqr(y);
-    trs_iv zz = iv_sqr(z);
-    trs_iv xy = iv_mul(x, y);
-    trs_iv xz = iv_mul(x, z);
-    trs_iv yz = iv_mul(y, z);
-    trs_iv xw = iv_mul(x, w);
-    trs_iv yw = iv_mul(y, w);
-    trs_iv zw = iv_mul(z, w);
-    trs_iv sq[3];
-    trs_iv d[3][3];
-    int i;
-    int j;
-    sq[0] = iv_add(yy, zz);
-    sq[1] = iv_add(xx, zz);
-    sq[2] = iv_add(xx, yy);
-    d[0][1] = iv_add(xy, iv_neg(zw));
-    d[0][2] = iv_add(xz, yw);
-    d[1][0] = iv_add(xy, zw);
-    d[1][2] = iv_add(yz, iv_neg(xw));
-    d[2][0] = iv_add(xz, iv_neg(yw));
-    d[2][1] = iv_add(yz, xw);
-    for (i = 0; i < 3; i++) {
-        for (j = 0; j < 3; j++) {
-            trs_iv e;
-            if (i == j) {
-                e.lo = cbx_add_dn(1.0, -2.0 * sq[i].hi);
-                e.hi = cbx_add_up(1.0, -2.0 * sq[i].lo);
-            } else {
-                e.lo = 2.0 * d[i][j].lo;
-                e.hi = 2.0 * d[i][j].hi;
-            }
-            r[i][j] = iv_unit(e);
-        }
-    }
 }
 
 /* acc = b (first != 0), else acc grown to hold b. */
@@ -349,19 +202,6 @@ static trs_q key_unit(const cbx_trs *k)
         v.c[i] = iv_pt(k->q[i]);
     }
     return q_normalise(&v);
-}
-
-/* {x0 + s (x1 - x0) : s in [a, b]} (0 <= a <= b <= 1). */
-static trs_iv lerp_range(double x0, double x1, double a, double b)
-{
-    trs_iv d;
-    trs_iv va;
-    trs_iv vb;
-    d.lo = cbx_add_dn(x1, -x0);
-    d.hi = cbx_add_up(x1, -x0);
-    va = iv_add(iv_pt(x0), iv_mul(iv_pt(a), d));
-    vb = iv_add(iv_pt(x0), iv_mul(iv_pt(b), d));
-    return iv_hull(va, vb);
 }
 
 /* ---- the path of the rotation, cell by cell ------------------------------ */
@@ -473,18 +313,17 @@ static void walk_next(const trs_path *p, trs_walk *w, const trs_q *u1)
 static void cell_imat(const cbx_trs *k0, const cbx_trs *k1, const trs_q *arc, double a, double b,
                       cbx_imat *out)
 {
-    trs_iv r[3][3];
-    trs_iv sc[3];
+    trs_rot r = q_rotation(arc);
+    cbx_iv sc[3];
     int i;
     int j;
-    q_rotation(arc, r);
     for (j = 0; j < 3; j++) {
-        sc[j] = lerp_range(k0->s[j], k1->s[j], a, b);
+        sc[j] = iv_lerp(k0->s[j], k1->s[j], a, b);
     }
     for (i = 0; i < 3; i++) {
-        trs_iv t = lerp_range(k0->t[i], k1->t[i], a, b);
+        cbx_iv t = iv_lerp(k0->t[i], k1->t[i], a, b);
         for (j = 0; j < 3; j++) {
-            trs_iv e = iv_mul(r[i][j], sc[j]);
+            cbx_iv e = iv_mul(r.e[i][j], sc[j]);
             out->lo[i][j] = e.lo;
             out->hi[i][j] = e.hi;
         }
@@ -500,7 +339,7 @@ static void cell_imat(const cbx_trs *k0, const cbx_trs *k1, const trs_q *arc, do
 static cbx_status path_setup(const cbx_trs *k0, const cbx_trs *k1, cbx_interp mode,
                              double s0, double s1, unsigned depth, trs_path *p)
 {
-    trs_iv dot;
+    cbx_iv dot;
     double w;
     double f;
     double l;
@@ -677,7 +516,7 @@ static cbx_status ball_piece(const cbx_imat *m, const double c[3], double r, cbx
 {
     cbx_box cb;
     cbx_status st;
-    trs_iv rad = iv_pt(cbx_abs(r));
+    cbx_iv rad = iv_pt(cbx_abs(r));
     int i;
     int j;
     for (j = 0; j < 3; j++) {
@@ -686,8 +525,8 @@ static cbx_status ball_piece(const cbx_imat *m, const double c[3], double r, cbx
     }
     st = cbx_transform_box_imat(m, &cb, out);
     for (i = 0; i < 3; i++) {
-        trs_iv n2 = iv_pt(0.0);
-        trs_iv g;
+        cbx_iv n2 = iv_pt(0.0);
+        cbx_iv g;
         for (j = 0; j < 3; j++) {
             n2 = iv_add(n2, iv_sqr(iv_pt(cbx_max2(cbx_abs(m->lo[i][j]), cbx_abs(m->hi[i][j])))));
         }
@@ -807,8 +646,8 @@ cbx_status cbx_motion_trs_path(const cbx_trs *keys, size_t n, cbx_interp mode, d
     m = (double)nseg; /* segment i: global times [i/m, (i+1)/m] */
     for (i = 0; i < nseg; i++) {
         /* the local times s m - i of [s0, s1], enclosed */
-        trs_iv l0 = iv_add(iv_mul(iv_pt(s0), iv_pt(m)), iv_pt(-(double)i));
-        trs_iv l1 = iv_add(iv_mul(iv_pt(s1), iv_pt(m)), iv_pt(-(double)i));
+        cbx_iv l0 = iv_add(iv_mul(iv_pt(s0), iv_pt(m)), iv_pt(-(double)i));
+        cbx_iv l1 = iv_add(iv_mul(iv_pt(s1), iv_pt(m)), iv_pt(-(double)i));
         double a = cbx_max2(l0.lo, 0.0);
         double b = cbx_min2(l1.hi, 1.0);
         cbx_box bk;

@@ -1,0 +1,94 @@
+/*
+ * ACSL logic of one real interval [lo, hi] (src/f64/cbx_iv.h): membership,
+ * the range a primitive accepts, the exact ends of a square, and the
+ * statements of containment for a product, a square, a square root and a
+ * quotient.  Read by Frama-C only.  The product's exact ends (itmin,
+ * itmax, itmag) and bilinearity (iterm_all) are the interval matrices'
+ * (specs/cbx_imat_logic.h, included first by certbox.h).
+ *
+ * Each containment is a named predicate, so that its lemma's trigger is
+ * the predicate and not a bare product (as iterm_holds).  The lemmas are
+ * compiled only with CBX_IV_LEMMAS: in proofs/lemmas.c (proven there) and
+ * proofs/trs.c (used there).
+ */
+#ifndef CBX_IV_LOGIC_H
+#define CBX_IV_LOGIC_H
+
+/*@ // x lies in [lo, hi]
+    predicate iv_has(real lo, real hi, real x) = lo <= x <= hi;
+    // both ends at most m in magnitude
+    predicate iv_rng(real lo, real hi, real m) = -m <= lo <= m && -m <= hi <= m;
+
+    // The exact ends of {x^2 : x in [l, h]} (l <= h).
+    logic real sqmin(real l, real h) = l >= 0 ? l*l : (h <= 0 ? h*h : 0);
+    logic real sqmax(real l, real h) = \max(l*l, h*h);
+
+    // Containment, for every real point of the operands:
+    //   x y in [lo, hi] (x in [al, ah], y in [bl, bh])
+    predicate iv_prod(real lo, real hi, real al, real ah, real bl, real bh) =
+      \forall real x, y; al <= x <= ah && bl <= y <= bh ==> lo <= x*y <= hi;
+    //   one point of it: x y in [lo, hi]
+    predicate prod_at(real lo, real hi, real x, real y) = lo <= x*y <= hi;
+    //   the product's exact ends for a point a in [0, 1] and an interval
+    //   [dl, dh] within e of dd: within e of a dd
+    predicate pt_prod_near(real a, real dd, real e, real dl, real dh) =
+      itmin(a, a, dl, dh) >= a*dd - e && itmax(a, a, dl, dh) <= a*dd + e
+      && itmag(a, a, dl, dh) <= \abs(dd) + e;
+    //   one point of it: x^2 in [lo, hi]
+    predicate sq_at(real lo, real hi, real x) = lo <= x*x <= hi;
+    //   x^2 in [lo, hi] (x in [l, h])
+    predicate iv_sq(real lo, real hi, real l, real h) =
+      \forall real x; l <= x <= h ==> lo <= x*x <= hi;
+    //   y in [lo, hi] for every y >= 0 with y^2 in [l, h] (the square root)
+    predicate iv_root(real lo, real hi, real l, real h) =
+      \forall real y; 0 <= y && l <= y*y <= h ==> lo <= y <= hi;
+    //   lo y <= x <= hi y (x / y in [lo, hi], multiplied out; y > 0)
+    predicate iv_quot(real lo, real hi, real al, real ah, real bl, real bh) =
+      \forall real x, y; al <= x <= ah && bl <= y <= bh ==> lo*y <= x <= hi*y;
+    //   x0 + s D in [lo, hi] for every s in [a, b] (a linear path)
+    predicate lerp_in(real lo, real hi, real x0, real d, real a, real b) =
+      \forall real s; a <= s <= b ==> lo <= x0 + s*d <= hi;
+    // c y <= c z for c >= 0 and y <= z; the reverse for c <= 0
+    predicate mono(real c, real y, real z) =
+      y <= z ==> ((c >= 0 ==> c*y <= c*z) && (c <= 0 ==> c*z <= c*y));
+    // the sign of c y for y >= 0
+    predicate msign(real c, real y) = 0 <= y ==> ((c <= 0 ==> c*y <= 0) && (c >= 0 ==> 0 <= c*y));
+    // squares: nonnegative, growing on y >= 0, and back (the provers'
+    // nonlinear facts, each asked for by name where it is used)
+    predicate sqp(real y) = 0 <= y*y;
+    predicate sqm(real y, real z) = 0 <= y <= z ==> y*y <= z*z;
+    predicate sql(real y, real z) = 0 <= z && y*y <= z*z ==> y <= z;
+*/
+
+#ifdef CBX_IV_LEMMAS
+/*@
+    lemma mono_all: \forall real c, y, z; mono(c, y, z);
+    lemma msign_all: \forall real c, y; msign(c, y);
+    lemma iv_prod_ends: \forall real lo, hi, al, ah, bl, bh;
+      lo <= itmin(al, ah, bl, bh) && itmax(al, ah, bl, bh) <= hi ==> iv_prod(lo, hi, al, ah, bl, bh);
+    lemma iv_prod_at: \forall real lo, hi, al, ah, bl, bh, x, y;
+      iv_prod(lo, hi, al, ah, bl, bh) && al <= x <= ah && bl <= y <= bh ==> prod_at(lo, hi, x, y);
+    lemma pt_prod: \forall real a, dd, e, dl, dh;
+      0 <= a <= 1 && 0 <= e && dd - e <= dl <= dd <= dh <= dd + e ==> pt_prod_near(a, dd, e, dl, dh);
+    // factors in [-1, 1]: the product's exact ends too
+    lemma itm_1: \forall real al, ah, bl, bh;
+      iv_rng(al, ah, 1) && iv_rng(bl, bh, 1) ==>
+        -1 <= itmin(al, ah, bl, bh) && itmax(al, ah, bl, bh) <= 1 && itmag(al, ah, bl, bh) <= 1;
+    lemma sqm_1: \forall real l, h; iv_rng(l, h, 1) ==> 0 <= sqmin(l, h) && sqmax(l, h) <= 1;
+    lemma iv_sq_at: \forall real lo, hi, l, h, x;
+      iv_sq(lo, hi, l, h) && l <= x <= h ==> sq_at(lo, hi, x);
+    lemma iv_sq_ends: \forall real lo, hi, l, h;
+      lo <= sqmin(l, h) && sqmax(l, h) <= hi ==> iv_sq(lo, hi, l, h);
+    lemma sqp_all: \forall real y; sqp(y);
+    lemma sqm_all: \forall real y, z; sqm(y, z);
+    lemma sql_all: \forall real y, z; sql(y, z);
+    lemma iv_root_ends: \forall real lo, hi, l, h;
+      (lo <= 0 || lo*lo <= l) && 0 <= hi && h <= hi*hi ==> iv_root(lo, hi, l, h);
+    lemma lerp_ends: \forall real lo, hi, x0, d, a, b;
+      lo <= x0 + a*d && lo <= x0 + b*d && x0 + a*d <= hi && x0 + b*d <= hi ==> lerp_in(lo, hi, x0, d, a, b);
+    lemma iv_quot_ends: \forall real lo, hi, al, ah, bl, bh;
+      0 < bl && lo*bl <= al && lo*bh <= al && ah <= hi*bl && ah <= hi*bh ==> iv_quot(lo, hi, al, ah, bl, bh);
+*/
+#endif
+
+#endif /* CBX_IV_LOGIC_H */
