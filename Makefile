@@ -51,17 +51,19 @@ SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
-LIBSRC  := src/algo/cbx_interval.c src/algo/cbx_center.c src/algo/cbx_convert.c src/algo/cbx_sphere.c src/core/cbx_status.c src/algo/cbx_batch.c src/f64/cbx_tight.c src/f64/cbx_class.c src/f64/cbx_motion.c src/f64/cbx_imat.c src/f64/cbx_chain.c src/f64/cbx_trs.c src/algo/cbx_project.c \
-           src/f32/cbx_interval_f.c src/f32/cbx_center_f.c src/f32/cbx_convert_f.c src/f32/cbx_sphere_f.c src/f32/cbx_batch_f.c src/f32/cbx_project_f.c \
-           src/core/cbx_ieee.c src/f32/cbx_ieee_f.c
-HEADERS := include/certbox.h include/cbx_api.h src/core/cbx_build.h src/core/cbx_prec.h include/cbx_prec_begin.h include/cbx_prec_end.h include/cbx_names_f.h src/core/cbx_round.h src/core/cbx_quot.h src/core/cbx_domain.h src/core/cbx_endpoints.h src/algo/cbx_vertex.h src/algo/cbx_kernel.h src/algo/cbx_fast.h src/core/cbx_eft.h src/core/cbx_ieee_cases.h src/algo/cbx_onebox.h specs/cbx_tight.h specs/cbx_logic.h specs/cbx_spec.h specs/cbx_ball.h specs/cbx_class.h src/f64/cbx_ikernel.h src/f64/cbx_iv.h src/f64/cbx_quat.h specs/cbx_iv_logic.h specs/cbx_quat_logic.h specs/cbx_imat.h specs/cbx_imat_logic.h specs/cbx_plane.h specs/cbx_proj_logic.h specs/cbx_proj.h
+# every source of src/ (binary64 in core/, algo/, f64/; the *_f.c stubs of
+# f32/ instantiate the same sources for binary32), and every header the
+# library and its proofs read: what is in the tree is built, nothing listed
+LIBSRC  := $(sort $(wildcard src/*/cbx_*.c))
+HEADERS := $(sort $(wildcard include/*.h src/*/*.h specs/*.h))
 LIBOBJ  := $(LIBSRC:src/%.c=$(B)/obj/%.o)
 PICOBJ  := $(LIBSRC:src/%.c=$(B)/pic/%.o)
+SANOBJ  := $(LIBSRC:src/%.c=$(B)/san/obj/%.o)
 # each *_f.c is a stub that #includes its binary64 source: rebuild it when
 # that source changes
 FAMSRC  := $(patsubst src/f32/%_f.c,%,$(filter %_f.c,$(LIBSRC)))
 famof    = $(filter %/$(1).c,$(LIBSRC))
-$(foreach f,$(FAMSRC),$(eval $(B)/obj/f32/$(f)_f.o $(B)/pic/f32/$(f)_f.o: $(call famof,$(f))))
+$(foreach f,$(FAMSRC),$(eval $(B)/obj/f32/$(f)_f.o $(B)/pic/f32/$(f)_f.o $(B)/san/obj/f32/$(f)_f.o: $(call famof,$(f))))
 SONAME  := libcertbox.so.$(SOVERSION)
 
 .PHONY: fuzz fuzz-check mutants install-check all demo check check-deps check-deps-test check-deps-proof test test-san proof proof-check install uninstall clean header-check
@@ -76,7 +78,14 @@ $(B)/pic/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(ALLCFLAGS) -fPIC -fvisibility=default -c $< -o $@
 
+# the library once more under ASan/UBSan, linked by every sanitizer test
+$(B)/san/obj/%.o: src/%.c $(HEADERS)
+	@mkdir -p $(@D)
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -c $< -o $@
+
 $(B)/libcertbox.a: $(LIBOBJ)
+	rm -f $@ && ar rcs $@ $^
+$(B)/san/libcertbox.a: $(SANOBJ)
 	rm -f $@ && ar rcs $@ $^
 $(B)/libcertbox.so.$(VERSION): $(PICOBJ)
 	$(CC) -shared -Wl,-soname,$(SONAME) -o $@ $^ -lm
@@ -122,23 +131,23 @@ GLTFORACLE   := tests/gltf_oracle.c
 $(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(TESTUTIL) tests/exact_util.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
 	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(TESTUTIL) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
-$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(TESTUTIL) tests/exact_util.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(LIBSRC) $(HEADERS)
+$(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) tests/gltf_oracle.h $(TESTUTIL) tests/exact_util.h $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/san/libcertbox.a $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) $(INC) -Itools/certbox -Itests $< $(GLTFORACLE) $(TESTUTIL) $(GLTFSRC) $(LIBSRC) $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) $(INC) -Itools/certbox -Itests $< $(GLTFORACLE) $(TESTUTIL) $(GLTFSRC) $(B)/san/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(PUBCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
-$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+$(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TESTUTIL) $(B)/san/libcertbox.a $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itools/certbox -Itests $< $(SCENESRC) $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itools/certbox -Itests $< $(SCENESRC) $(TESTUTIL) $(B)/san/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -Itests $< $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # the tight mode with the fma-free two_prod (Dekker's product, src/core/cbx_eft.h)
 $(B)/test_tight_nofma: tests/test_tight.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
 	$(CC) $(ALLCFLAGS) -DCBX_NO_FMA -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
-$(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(LIBSRC) $(HEADERS) tests/exact_util.h
+$(B)/san/test_%: tests/test_%.c $(TESTUTIL) $(B)/san/libcertbox.a $(HEADERS) tests/exact_util.h
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itests $< $(TESTUTIL) $(LIBSRC) -lmpfr -lgmp -lm -o $@
+	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itests $< $(TESTUTIL) $(B)/san/libcertbox.a -lmpfr -lgmp -lm -o $@
 
 demo: check-deps-test
 	$(MAKE) $(B)/demo $(B)/certbox

@@ -28,7 +28,8 @@
 # Replay a reproducer: build/fuzz/fuzz_<name> build/fuzz/run/<name>/crash-...
 #
 # Per harness it prints the executions, the corpus size (files) and the
-# crashes found.  Builds and runs are under nice -n 19.
+# crashes found (two harnesses run at a time, each for SECONDS).  Builds and
+# runs are under nice -n 19.
 # Needs clang with libFuzzer (Debian bookworm: clang and libclang-rt-14-dev);
 # installed with apt-get when absent and running as root (FUZZ_NO_INSTALL=1:
 # never install).  FUZZ_CC: the compiler (default clang).
@@ -151,10 +152,11 @@ for h in $HARNESSES; do
 done
 
 # ---- run -----------------------------------------------------------------
-bad=0
-printf '%-16s %12s %8s %8s  %s\n' harness executions corpus crashes result
-for h in $HARNESSES; do
-    case " $SKIPPED " in *" $h "*) printf '%-16s %12s %8s %8s  %s\n' "$h" - - - "skipped (no jansson)"; continue;; esac
+# One harness: its line of the table to $B/run/NAME.line, its failure
+# details to $B/run/NAME.more.  Two harnesses run at a time (each one
+# process for SECONDS), the table printed in the list's order.
+run_one() {
+    h=$1
     run=$B/run/$h
     rm -rf "$run"
     mkdir -p "$run/corpus"
@@ -177,12 +179,12 @@ for h in $HARNESSES; do
     crashes=$(find "$run" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
               -o -name 'timeout-*' -o -name 'oom-*' \) | wc -l | tr -d ' ')
     if [ "$rc" -ne 0 ] || [ "$crashes" -ne 0 ]; then
-        bad=1
         result="FAIL (exit $rc), log $run/log"
     else
         result=ok
     fi
-    printf '%-16s %12s %8s %8s  %s\n' "$h" "${execs:-?}" "$size" "$crashes" "$result"
+    printf '%-16s %12s %8s %8s  %s\n' "$h" "${execs:-?}" "$size" "$crashes" "$result" > "$B/run/$h.line"
+    : > "$B/run/$h.more"
     if [ "$result" != ok ]; then
         # the oracle's message and the decoded reproducer (or the sanitizer's report)
         if grep -q 'oracle FAILURE' "$run/log"; then
@@ -192,6 +194,23 @@ for h in $HARNESSES; do
         fi
         find "$run" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' \
              -o -name 'timeout-*' -o -name 'oom-*' \) | sed 's#^#    reproducer: #'
-    fi
+    fi >> "$B/run/$h.more"
+}
+bad=0
+mkdir -p "$B/run"
+n=0
+for h in $HARNESSES; do
+    rm -f "$B/run/$h.line" "$B/run/$h.more"
+    case " $SKIPPED " in *" $h "*) printf '%-16s %12s %8s %8s  %s\n' "$h" - - - "skipped (no jansson)" > "$B/run/$h.line"; continue;; esac
+    run_one "$h" &
+    n=$((n + 1))
+    [ $((n % 2)) = 0 ] && wait
+done
+wait
+printf '%-16s %12s %8s %8s  %s\n' harness executions corpus crashes result
+for h in $HARNESSES; do
+    if [ -f "$B/run/$h.line" ]; then cat "$B/run/$h.line"; else echo "$h: FAIL (no result)"; bad=1; fi
+    grep -q ' ok$\| skipped (no jansson)$' "$B/run/$h.line" 2>/dev/null || bad=1
+    cat "$B/run/$h.more" 2>/dev/null
 done
 exit $bad
