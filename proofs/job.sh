@@ -19,8 +19,10 @@
 #   I64, SI64 the interval-matrix functions (proofs/imat.c, with the
 #             lemmas of specs/cbx_imat_logic.h) and their smoke tests
 #   T64, ST64 the proven part of the rotation motion (proofs/trs.c): the
-#             interval arithmetic of src/f64/cbx_iv.h, with the lemmas of
-#             specs/cbx_iv_logic.h and cbx_imat_logic.h; its smoke tests
+#             interval arithmetic of src/f64/cbx_iv.h, the rotations of
+#             src/f64/cbx_quat.h and the cells of src/f64/cbx_cell.h, with
+#             the lemmas of specs/cbx_iv_logic.h and cbx_imat_logic.h; its
+#             smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
 #             -wp-split; PA64, PA32 its functions marked for -wp-split;

@@ -109,6 +109,16 @@ case_ iv-mul-lo-nearest src/f64/cbx_iv.h iv_mul proofs/trs.c c0,c1,c2,c3,ends,lo
 case_ iv-add-lo-twice src/f64/cbx_iv.h iv_add proofs/trs.c near near \
   "    r.lo = cbx_add_dn(a.lo, b.lo);" \
   "    r.lo = cbx_add_dn(cbx_add_dn(a.lo, b.lo), -0x1p-1000);" - &
+# 14. a cell of the rotation motion: the scale's enclosure widened to hold
+#    0 (still contains every product; the tightness must fail)
+case_ cell-scale-widened src/f64/cbx_cell.h cell_col proofs/trs.c m,ab,w,rng,sub,in,v,done,col 'assert_w\|assert_v\|ensures_col\|invariant_done' \
+  "    cbx_iv sc = iv_lerp(x0, x1, a, b);" \
+  "    cbx_iv sc = iv_hull(iv_lerp(x0, x1, a, b), iv_pt(0.0));" - &
+# 15. a cell's translation: the lower end moved down by 1 (still contains
+#    the path; the tightness must fail)
+case_ cell-translation-lower src/f64/cbx_cell.h cell_imat proofs/trs.c k,t,col,old,lin,tr 'invariant_tr\|ensures_tr' \
+  "        out->lo[j][3] = t.lo;" \
+  "        out->lo[j][3] = cbx_add_dn(t.lo, -1.0);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

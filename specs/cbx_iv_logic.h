@@ -48,6 +48,25 @@
     //   x0 + s D in [lo, hi] for every s in [a, b] (a linear path)
     predicate lerp_in(real lo, real hi, real x0, real d, real a, real b) =
       \forall real s; a <= s <= b ==> lo <= x0 + s*d <= hi;
+    //   one point of it: x0 + s D in [lo, hi]
+    predicate lerp_pt(real lo, real hi, real x0, real d, real s) = lo <= x0 + s*d <= hi;
+    //   u (x0 + s D) in [lo, hi] for every u in [rl, rh] and s in [a, b]
+    //   (a product whose second factor is a linear path)
+    predicate cell_prod(real lo, real hi, real rl, real rh, real x0, real d, real a, real b) =
+      \forall real s, u; a <= s <= b && rl <= u <= rh ==> prod_at(lo, hi, u, x0 + s*d);
+    // the exact ends of {x0 + s (x1 - x0) : s in [a, b]}, and iv_lerp's
+    // bound on the distance of its ends to them
+    logic real lerp_lo(real x0, real x1, real a, real b) = \min(x0 + a*(x1 - x0), x0 + b*(x1 - x0));
+    logic real lerp_hi(real x0, real x1, real a, real b) = \max(x0 + a*(x1 - x0), x0 + b*(x1 - x0));
+    // (80 u, binary64: CBX_U80 of cbx_prec_begin.h)
+    logic real lerp_err(real x0, real x1) = 0x1.4p-47 * (\abs(x0) + \abs(x1)) + 0x1p-1060;
+    // a product's exact ends over [ml, mh] x [sl, sh], both ends of the
+    // second factor in [l, h]: within those over [ml, mh] x [l, h], and
+    // its largest corner no larger
+    predicate it_sub(real ml, real mh, real sl, real sh, real l, real h) =
+      l <= sl <= h && l <= sh <= h ==>
+        itmin(ml, mh, l, h) <= itmin(ml, mh, sl, sh) && itmax(ml, mh, sl, sh) <= itmax(ml, mh, l, h)
+        && itmag(ml, mh, sl, sh) <= itmag(ml, mh, l, h);
     // c y <= c z for c >= 0 and y <= z; the reverse for c <= 0
     predicate mono(real c, real y, real z) =
       y <= z ==> ((c >= 0 ==> c*y <= c*z) && (c <= 0 ==> c*z <= c*y));
@@ -86,6 +105,11 @@
       (lo <= 0 || lo*lo <= l) && 0 <= hi && h <= hi*hi ==> iv_root(lo, hi, l, h);
     lemma lerp_ends: \forall real lo, hi, x0, d, a, b;
       lo <= x0 + a*d && lo <= x0 + b*d && x0 + a*d <= hi && x0 + b*d <= hi ==> lerp_in(lo, hi, x0, d, a, b);
+    lemma lerp_at: \forall real lo, hi, x0, d, a, b, s;
+      lerp_in(lo, hi, x0, d, a, b) && a <= s <= b ==> lerp_pt(lo, hi, x0, d, s);
+    lemma lerp_prod: \forall real lo, hi, rl, rh, sl, sh, x0, d, a, b;
+      iv_prod(lo, hi, rl, rh, sl, sh) && lerp_in(sl, sh, x0, d, a, b) ==> cell_prod(lo, hi, rl, rh, x0, d, a, b);
+    lemma it_sub_all: \forall real ml, mh, sl, sh, l, h; it_sub(ml, mh, sl, sh, l, h);
     lemma iv_quot_ends: \forall real lo, hi, al, ah, bl, bh;
       0 < bl && lo*bl <= al && lo*bh <= al && ah <= hi*bl && ah <= hi*bh ==> iv_quot(lo, hi, al, ah, bl, bh);
 */

@@ -263,8 +263,7 @@ static inline cbx_iv iv_div(cbx_iv a, cbx_iv b)
     assigns \nothing;
     ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
     ensures in: lerp_in(\result.lo, \result.hi, x0, x1 - x0, a, b);
-    ensures near: \result.lo >= \min(x0 + a * (x1 - x0), x0 + b * (x1 - x0)) - (CBX_U80 * (\abs(x0) + \abs(x1)) + 0x1p-1060)
-                  && \result.hi <= \max(x0 + a * (x1 - x0), x0 + b * (x1 - x0)) + (CBX_U80 * (\abs(x0) + \abs(x1)) + 0x1p-1060);
+    ensures near: \result.lo >= lerp_lo(x0, x1, a, b) - lerp_err(x0, x1) && \result.hi <= lerp_hi(x0, x1, a, b) + lerp_err(x0, x1);
 */
 static inline cbx_iv iv_lerp(double x0, double x1, double a, double b)
 {

@@ -25,6 +25,7 @@ typedef struct trs_rot { cbx_iv e[3][3]; } trs_rot;
     predicate q_has(trs_q q, real x, real y, real z, real w) =
       iv_has(q.c[0].lo, q.c[0].hi, x) && iv_has(q.c[1].lo, q.c[1].hi, y)
       && iv_has(q.c[2].lo, q.c[2].hi, z) && iv_has(q.c[3].lo, q.c[3].hi, w);
+    // finite ends in [-1, 1] (a component of a unit quaternion's box)
     predicate iv_ok1(cbx_iv a) = \is_finite(a.lo) && \is_finite(a.hi) && iv_rng(a.lo, a.hi, 1);
     // an entry cut to [-1, 1]: finite, lo >= -1, hi <= 1 (lo > hi, an
     // empty entry, only where the formula's enclosure is above 1 or below
@@ -35,13 +36,6 @@ typedef struct trs_rot { cbx_iv e[3][3]; } trs_rot;
     predicate q_unit_box(trs_q q) =
       iv_ok1(q.c[0]) && iv_ok1(q.c[1]) && iv_ok1(q.c[2]) && iv_ok1(q.c[3])
       && q.c[0].lo <= q.c[0].hi && q.c[1].lo <= q.c[1].hi && q.c[2].lo <= q.c[2].hi && q.c[3].lo <= q.c[3].hi;
-    // the nine entries of the rotation of (x, y, z, w) lie in m
-    predicate rot_has(trs_rot m, real x, real y, real z, real w) =
-      iv_has(m.e[0][0].lo, m.e[0][0].hi, rot00(x, y, z, w)) && iv_has(m.e[0][1].lo, m.e[0][1].hi, rot01(x, y, z, w))
-      && iv_has(m.e[0][2].lo, m.e[0][2].hi, rot02(x, y, z, w)) && iv_has(m.e[1][0].lo, m.e[1][0].hi, rot10(x, y, z, w))
-      && iv_has(m.e[1][1].lo, m.e[1][1].hi, rot11(x, y, z, w)) && iv_has(m.e[1][2].lo, m.e[1][2].hi, rot12(x, y, z, w))
-      && iv_has(m.e[2][0].lo, m.e[2][0].hi, rot20(x, y, z, w)) && iv_has(m.e[2][1].lo, m.e[2][1].hi, rot21(x, y, z, w))
-      && iv_has(m.e[2][2].lo, m.e[2][2].hi, rot22(x, y, z, w));
 */
 
 /* A diagonal entry 1 - 2 t for t in s (a sum of two squares), rounded

@@ -24,9 +24,10 @@
  * (src/f64/cbx_iv.h: sums, products, squares, square roots, quotients and
  * the linear paths of T and S, each containing the exact result for every
  * real point of its operands, each end within a stated bound of the exact
- * end) and the rotation matrices of a box of unit quaternions
- * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box).
- * Tested only (tests/test_trs.c, against MPFR): what remains in this file,
+ * end), the rotation matrices of a box of unit quaternions
+ * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box)
+ * and each cell's interval matrix from them (src/f64/cbx_cell.h: every
+ * entry R_ij S_j(s) and T_i(s) for every s of the cell).  Tested only (tests/test_trs.c, against MPFR): what remains in this file,
  * the quaternion path (normalisation, bisection, the arc box, the choice
  * of the shorter arc) and the cells' loop (proofs/README.md, "Rotation
  * motion").
@@ -39,6 +40,7 @@
 #include "cbx_domain.h"
 #include "cbx_iv.h"
 #include "cbx_quat.h"
+#include "cbx_cell.h"
 
 #define TRS_MAX_DEPTH 16U
 
@@ -307,31 +309,6 @@ static void walk_next(const trs_path *p, trs_walk *w, const trs_q *u1)
     }
 }
 
-/* The interval matrix of every map T(s) R(s) S(s), s in [a, b], R in the
- * rotations of the arc box: entry (i, j) the interval product of R_ij and
- * S_j, column 3 the interval of T_i. */
-static void cell_imat(const cbx_trs *k0, const cbx_trs *k1, const trs_q *arc, double a, double b,
-                      cbx_imat *out)
-{
-    trs_rot r = q_rotation(arc);
-    cbx_iv sc[3];
-    int i;
-    int j;
-    for (j = 0; j < 3; j++) {
-        sc[j] = iv_lerp(k0->s[j], k1->s[j], a, b);
-    }
-    for (i = 0; i < 3; i++) {
-        cbx_iv t = iv_lerp(k0->t[i], k1->t[i], a, b);
-        for (j = 0; j < 3; j++) {
-            cbx_iv e = iv_mul(r.e[i][j], sc[j]);
-            out->lo[i][j] = e.lo;
-            out->hi[i][j] = e.hi;
-        }
-        out->lo[i][3] = t.lo;
-        out->hi[i][3] = t.hi;
-    }
-}
-
 /* Checks the keyframes and the shutter and sets up the cells: 2^depth
  * cells over the shutter's length (2^depth to 2^(depth+1) + 1 of them, of
  * 2^-levels each, levels = depth + about log2(1 / (s1 - s0)), at most 28).
@@ -409,6 +386,7 @@ static void path_cell(trs_path *p, const cbx_trs *k0, const cbx_trs *k1, cbx_ima
     double b = cbx_min2((double)(trs_ix)(k + 1U) / n, p->s1);
     trs_q start = p->w[0].cur;
     trs_q arc;
+    trs_rot r;
     walk_next(p, &p->w[0], &p->u1);
     arc = q_arc_box(&start, &p->w[0].cur);
     if (p->both != 0) {
@@ -419,7 +397,8 @@ static void path_cell(trs_path *p, const cbx_trs *k0, const cbx_trs *k1, cbx_ima
         arc = q_hull(&arc, &arcn);
     }
     p->next = k + 1U;
-    cell_imat(k0, k1, &arc, a, b, m);
+    r = q_rotation(&arc);
+    cell_imat(*k0, *k1, r, a, b, m);
 }
 
 /* ---- public functions ---------------------------------------------------- */
