@@ -116,9 +116,9 @@ case_ cell-scale-widened src/f64/cbx_cell.h cell_col proofs/trs.c m,ab,w,rng,sub
   "    cbx_iv sc = iv_hull(iv_lerp(x0, x1, a, b), iv_pt(0.0));" - &
 # 15. a cell's translation: the lower end moved down by 1 (still contains
 #    the path; the tightness must fail)
-case_ cell-translation-lower src/f64/cbx_cell.h cell_imat proofs/trs.c k,t,col,old,lin,tr 'invariant_tr\|ensures_tr' \
-  "        out->lo[j][3] = t.lo;" \
-  "        out->lo[j][3] = cbx_add_dn(t.lo, -1.0);" - &
+case_ cell-translation-lower src/f64/cbx_cell.h cell_imat proofs/trs.c k,lin,tr 'invariant_tr\|ensures_tr' \
+  "        out->lo[j][3] = t[j].lo;" \
+  "        out->lo[j][3] = cbx_add_dn(t[j].lo, -1.0);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -18,10 +18,10 @@
 
 /*@ // a keyframe's translation and scale as cbx_trs.c's range check
     // leaves them: finite, |t| <= 2^500, |s| <= 2^250
-    predicate key_ts(cbx_trs k) = \forall integer i; 0 <= i < 3 ==>
-      \is_finite(k.t[i]) && \is_finite(k.s[i]) && \abs(k.t[i]) <= 0x1p500 && \abs(k.s[i]) <= 0x1p250;
+    predicate key_ts(cbx_trs *k) = \forall integer i; 0 <= i < 3 ==>
+      \is_finite(k->t[i]) && \is_finite(k->s[i]) && \abs(k->t[i]) <= 0x1p500 && \abs(k->s[i]) <= 0x1p250;
     // every entry of r finite and cut to [-1, 1]
-    predicate rot_cut(trs_rot r) = \forall integer i, j; 0 <= i < 3 && 0 <= j < 3 ==> iv_cut(r.e[i][j]);
+    predicate rot_cut(trs_rot *r) = \forall integer i, j; 0 <= i < 3 && 0 <= j < 3 ==> iv_cut(r->e[i][j]);
     // An entry [lo, hi] of column j < 3: finite; it holds u (x0 + s (x1 -
     // x0)) for every u in r (r_ij) and every s in [a, b] (containment);
     // each end within 12 u of the exact end of r times [L - e, H + e],
@@ -48,13 +48,13 @@ typedef struct trs_col { cbx_iv e[3]; } trs_col;
 /* Column j < 3 of the cell: the interval products of r_ij and the scale
  * x0 + s (x1 - x0) over s in [a, b]. */
 /*@ requires j: 0 <= j < 3;
-    requires r: \forall integer i; 0 <= i < 3 ==> iv_cut(r.e[i][j]);
+    requires r: \valid_read(r) && \forall integer i; 0 <= i < 3 ==> iv_cut(r->e[i][j]);
     requires x: \is_finite(x0) && \is_finite(x1) && \abs(x0) <= 0x1p250 && \abs(x1) <= 0x1p250;
     requires s: \is_finite(a) && \is_finite(b) && 0 <= a <= b <= 1;
     assigns \nothing;
-    ensures col: \forall integer i; 0 <= i < 3 ==> cell_v(\result.e[i].lo, \result.e[i].hi, r.e[i][j], x0, x1, a, b);
+    ensures col: \forall integer i; 0 <= i < 3 ==> cell_v(\result.e[i].lo, \result.e[i].hi, r->e[i][j], x0, x1, a, b);
 */
-static inline trs_col cell_col(trs_rot r, int j, double x0, double x1, double a, double b)
+static inline trs_col cell_col(const trs_rot *r, int j, double x0, double x1, double a, double b)
 {
     cbx_iv sc = iv_lerp(x0, x1, a, b);
     trs_col c;
@@ -65,58 +65,68 @@ static inline trs_col cell_col(trs_rot r, int j, double x0, double x1, double a,
                   && lerp_lo(x0, x1, a, b) - lerp_err(x0, x1) <= sc.hi <= lerp_hi(x0, x1, a, b) + lerp_err(x0, x1); */
     /*@ assert rng: iv_rng(sc.lo, sc.hi, CBX_SB); */
     /*@ loop invariant i: 0 <= i <= 3;
-        loop invariant done: \forall integer k; 0 <= k < i ==> cell_v(c.e[k].lo, c.e[k].hi, r.e[k][j], x0, x1, a, b);
+        loop invariant done: \forall integer k; 0 <= k < i ==> cell_v(c.e[k].lo, c.e[k].hi, r->e[k][j], x0, x1, a, b);
         loop assigns i, c;
         loop variant 3 - i;
     */
     for (i = 0; i < 3; i++) {
-        cbx_iv e = iv_mul(r.e[i][j], sc);
-        /*@ assert sub: it_sub(r.e[i][j].lo, r.e[i][j].hi, sc.lo, sc.hi,
+        cbx_iv e = iv_mul(r->e[i][j], sc);
+        /*@ assert sub: it_sub(r->e[i][j].lo, r->e[i][j].hi, sc.lo, sc.hi,
                                lerp_lo(x0, x1, a, b) - lerp_err(x0, x1), lerp_hi(x0, x1, a, b) + lerp_err(x0, x1)); */
-        /*@ assert in: cell_prod(e.lo, e.hi, r.e[i][j].lo, r.e[i][j].hi, x0, x1 - x0, a, b); */
-        /*@ assert v: cell_v(e.lo, e.hi, r.e[i][j], x0, x1, a, b); */
+        /*@ assert in: cell_prod(e.lo, e.hi, r->e[i][j].lo, r->e[i][j].hi, x0, x1 - x0, a, b); */
+        /*@ assert v: cell_v(e.lo, e.hi, r->e[i][j], x0, x1, a, b); */
         c.e[i] = e;
     }
     return c;
 }
 
 /* The cell's interval matrix: column j < 3 the products r_ij S_j, column 3
- * the translation T, over s in [a, b]. */
-/*@ requires k: key_ts(k0) && key_ts(k1);
-    requires r: rot_cut(r);
+ * the translation T, over s in [a, b].  Every input is read before the
+ * first write to *out. */
+/*@ requires k: \valid_read(k0) && \valid_read(k1) && key_ts(k0) && key_ts(k1);
+    requires r: \valid_read(r) && rot_cut(r);
     requires s: \is_finite(a) && \is_finite(b) && 0 <= a <= b <= 1;
-    requires out: \valid(out);
+    requires out: \valid(out) && \separated(out, k0, k1, r);
     assigns *out;
-    ensures lin: \forall integer i, j; 0 <= i < 3 && 0 <= j < 3 ==> cell_v(out->lo[i][j], out->hi[i][j], r.e[i][j], k0.s[j], k1.s[j], a, b);
-    ensures tr: \forall integer i; 0 <= i < 3 ==> cell_t(out->lo[i][3], out->hi[i][3], k0.t[i], k1.t[i], a, b);
+    ensures lin: \forall integer i, j; 0 <= i < 3 && 0 <= j < 3 ==>
+                   cell_v(out->lo[i][j], out->hi[i][j], \old(r->e[i][j]), \old(k0->s[j]), \old(k1->s[j]), a, b);
+    ensures tr: \forall integer i; 0 <= i < 3 ==>
+                  cell_t(out->lo[i][3], out->hi[i][3], \old(k0->t[i]), \old(k1->t[i]), a, b);
 */
-static void cell_imat(cbx_trs k0, cbx_trs k1, trs_rot r, double a, double b, cbx_imat *out)
+static void cell_imat(const cbx_trs *k0, const cbx_trs *k1, const trs_rot *r, double a, double b, cbx_imat *out)
 {
+    trs_col c[3];
+    cbx_iv t[3];
     int j;
     /*@ loop invariant j: 0 <= j <= 3;
-        loop invariant lin: \forall integer i, c; 0 <= i < 3 && 0 <= c < j ==> cell_v(out->lo[i][c], out->hi[i][c], r.e[i][c], k0.s[c], k1.s[c], a, b);
-        loop invariant tr: \forall integer i; 0 <= i < j ==> cell_t(out->lo[i][3], out->hi[i][3], k0.t[i], k1.t[i], a, b);
+        loop invariant lin: \forall integer i, k; 0 <= i < 3 && 0 <= k < j ==> cell_v(c[k].e[i].lo, c[k].e[i].hi, r->e[i][k], k0->s[k], k1->s[k], a, b);
+        loop invariant tr: \forall integer k; 0 <= k < j ==> cell_t(t[k].lo, t[k].hi, k0->t[k], k1->t[k], a, b);
+        loop assigns j, c[0..2], t[0..2];
+        loop variant 3 - j;
+    */
+    for (j = 0; j < 3; j++) {
+        /*@ assert k: \is_finite(k0->t[j]) && \is_finite(k0->s[j]) && \abs(k0->t[j]) <= 0x1p500 && \abs(k0->s[j]) <= 0x1p250
+                      && \is_finite(k1->t[j]) && \is_finite(k1->s[j]) && \abs(k1->t[j]) <= 0x1p500 && \abs(k1->s[j]) <= 0x1p250; */
+        t[j] = iv_lerp(k0->t[j], k1->t[j], a, b);
+        c[j] = cell_col(r, j, k0->s[j], k1->s[j], a, b);
+    }
+    /*@ loop invariant j: 0 <= j <= 3;
+        loop invariant lin: \forall integer i, k; 0 <= i < 3 && 0 <= k < j ==>
+                              cell_v(out->lo[i][k], out->hi[i][k], \at(r->e[i][k], Pre), \at(k0->s[k], Pre), \at(k1->s[k], Pre), a, b);
+        loop invariant tr: \forall integer k; 0 <= k < j ==>
+                             cell_t(out->lo[k][3], out->hi[k][3], \at(k0->t[k], Pre), \at(k1->t[k], Pre), a, b);
         loop assigns j, *out;
         loop variant 3 - j;
     */
     for (j = 0; j < 3; j++) {
-        cbx_iv t;
-        trs_col c;
-        /*@ assert k: \is_finite(k0.t[j]) && \is_finite(k0.s[j]) && \abs(k0.t[j]) <= 0x1p500 && \abs(k0.s[j]) <= 0x1p250
-                      && \is_finite(k1.t[j]) && \is_finite(k1.s[j]) && \abs(k1.t[j]) <= 0x1p500 && \abs(k1.s[j]) <= 0x1p250; */
-        t = iv_lerp(k0.t[j], k1.t[j], a, b);
-        /*@ assert t: cell_t(t.lo, t.hi, k0.t[j], k1.t[j], a, b); */
-        c = cell_col(r, j, k0.s[j], k1.s[j], a, b);
-        out->lo[0][j] = c.e[0].lo;
-        out->hi[0][j] = c.e[0].hi;
-        out->lo[1][j] = c.e[1].lo;
-        out->hi[1][j] = c.e[1].hi;
-        out->lo[2][j] = c.e[2].lo;
-        out->hi[2][j] = c.e[2].hi;
-        out->lo[j][3] = t.lo;
-        out->hi[j][3] = t.hi;
-        /*@ assert col: \forall integer i; 0 <= i < 3 ==> cell_v(out->lo[i][j], out->hi[i][j], r.e[i][j], k0.s[j], k1.s[j], a, b); */
-        /*@ assert old: \forall integer i, c; 0 <= i < 3 && 0 <= c < j ==> cell_v(out->lo[i][c], out->hi[i][c], r.e[i][c], k0.s[c], k1.s[c], a, b); */
+        out->lo[0][j] = c[j].e[0].lo;
+        out->hi[0][j] = c[j].e[0].hi;
+        out->lo[1][j] = c[j].e[1].lo;
+        out->hi[1][j] = c[j].e[1].hi;
+        out->lo[2][j] = c[j].e[2].lo;
+        out->hi[2][j] = c[j].e[2].hi;
+        out->lo[j][3] = t[j].lo;
+        out->hi[j][3] = t[j].hi;
     }
 }
 

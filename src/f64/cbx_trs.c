@@ -398,7 +398,7 @@ static void path_cell(trs_path *p, const cbx_trs *k0, const cbx_trs *k1, cbx_ima
     }
     p->next = k + 1U;
     r = q_rotation(&arc);
-    cell_imat(*k0, *k1, r, a, b, m);
+    cell_imat(k0, k1, &r, a, b, m);
 }
 
 /* ---- public functions ---------------------------------------------------- */
