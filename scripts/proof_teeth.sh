@@ -119,6 +119,11 @@ case_ cell-scale-widened src/f64/cbx_cell.h cell_col proofs/trs.c m,ab,w,rng,sub
 case_ cell-translation-lower src/f64/cbx_cell.h cell_imat proofs/trs.c k,lin,tr 'invariant_tr\|ensures_tr' \
   "        out->lo[j][3] = t[j].lo;" \
   "        out->lo[j][3] = cbx_add_dn(t[j].lo, -1.0);" - &
+# 16. the quaternions' dot product: one product's enclosure widened to
+#    hold 0 (still contains the dot product; the tightness must fail)
+case_ qdot-term-widened src/f64/cbx_quat.h q_dot proofs/trs.c one,rng,p,srng,s,near 'ensures_near\|assert_srng\|assert_s' \
+  "    s23 = iv_add(p2, p3);" \
+  "    s23 = iv_add(p2, iv_hull(p3, iv_pt(0.0)));" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

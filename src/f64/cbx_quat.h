@@ -32,6 +32,13 @@ typedef struct trs_rot { cbx_iv e[3][3]; } trs_rot;
     // -1, which no unit quaternion's entry is)
     predicate iv_cut(cbx_iv a) = \is_finite(a.lo) && \is_finite(a.hi) && -1 <= a.lo && a.hi <= 1
                                  && iv_rng(a.lo, a.hi, 32);
+    // the exact ends of the dot product's interval form over boxes q, r
+    logic real qdot_lo(trs_q q, trs_q r) =
+      itmin(q.c[0].lo, q.c[0].hi, r.c[0].lo, r.c[0].hi) + itmin(q.c[1].lo, q.c[1].hi, r.c[1].lo, r.c[1].hi)
+      + itmin(q.c[2].lo, q.c[2].hi, r.c[2].lo, r.c[2].hi) + itmin(q.c[3].lo, q.c[3].hi, r.c[3].lo, r.c[3].hi);
+    logic real qdot_hi(trs_q q, trs_q r) =
+      itmax(q.c[0].lo, q.c[0].hi, r.c[0].lo, r.c[0].hi) + itmax(q.c[1].lo, q.c[1].hi, r.c[1].lo, r.c[1].hi)
+      + itmax(q.c[2].lo, q.c[2].hi, r.c[2].lo, r.c[2].hi) + itmax(q.c[3].lo, q.c[3].hi, r.c[3].lo, r.c[3].hi);
     // every component finite, in [-1, 1] and ordered
     predicate q_unit_box(trs_q q) =
       iv_ok1(q.c[0]) && iv_ok1(q.c[1]) && iv_ok1(q.c[2]) && iv_ok1(q.c[3])
@@ -166,6 +173,43 @@ static inline trs_rot q_rotation(const trs_q *q)
     r.e[2][0] = rot_pq(xz, iv_neg(yw));
     r.e[2][1] = rot_pq(yz, xw);
     return r;
+}
+
+/* The dot product x.y of every x of box a and every y of box b (the
+ * keyframes' quaternions: its sign picks the shorter arc). */
+/*@ requires a: \valid_read(a) && q_unit_box(*a);
+    requires b: \valid_read(b) && q_unit_box(*b);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures in: \forall real x0, x1, x2, x3, y0, y1, y2, y3;
+                  q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3)
+                  ==> iv_has(\result.lo, \result.hi, x0*y0 + x1*y1 + x2*y2 + x3*y3);
+    ensures near: \result.lo >= qdot_lo(*a, *b) - 0x1p-45 && \result.hi <= qdot_hi(*a, *b) + 0x1p-45;
+*/
+static inline cbx_iv q_dot(const trs_q *a, const trs_q *b)
+{
+    cbx_iv p0 = iv_mul(a->c[0], b->c[0]);
+    cbx_iv p1 = iv_mul(a->c[1], b->c[1]);
+    cbx_iv p2 = iv_mul(a->c[2], b->c[2]);
+    cbx_iv p3 = iv_mul(a->c[3], b->c[3]);
+    cbx_iv s01;
+    cbx_iv s23;
+    /*@ assert one: iv_rng(a->c[0].lo, a->c[0].hi, 1) && iv_rng(b->c[0].lo, b->c[0].hi, 1)
+                    && iv_rng(a->c[1].lo, a->c[1].hi, 1) && iv_rng(b->c[1].lo, b->c[1].hi, 1)
+                    && iv_rng(a->c[2].lo, a->c[2].hi, 1) && iv_rng(b->c[2].lo, b->c[2].hi, 1)
+                    && iv_rng(a->c[3].lo, a->c[3].hi, 1) && iv_rng(b->c[3].lo, b->c[3].hi, 1); */
+    /*@ assert rng: iv_rng(p0.lo, p0.hi, 2) && iv_rng(p1.lo, p1.hi, 2) && iv_rng(p2.lo, p2.hi, 2) && iv_rng(p3.lo, p3.hi, 2); */
+    /*@ assert p: \forall real x0, x1, x2, x3, y0, y1, y2, y3;
+                    q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3) ==>
+                    prod_at(p0.lo, p0.hi, x0, y0) && prod_at(p1.lo, p1.hi, x1, y1)
+                    && prod_at(p2.lo, p2.hi, x2, y2) && prod_at(p3.lo, p3.hi, x3, y3); */
+    s01 = iv_add(p0, p1);
+    s23 = iv_add(p2, p3);
+    /*@ assert srng: iv_rng(s01.lo, s01.hi, 8) && iv_rng(s23.lo, s23.hi, 8); */
+    /*@ assert s: \forall real x0, x1, x2, x3, y0, y1, y2, y3;
+                    q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3) ==>
+                    iv_has(s01.lo, s01.hi, x0*y0 + x1*y1) && iv_has(s23.lo, s23.hi, x2*y2 + x3*y3); */
+    return iv_add(s01, s23);
 }
 
 #endif /* CBX_QUAT_H */

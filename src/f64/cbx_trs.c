@@ -90,12 +90,6 @@ static trs_q q_hull(const trs_q *a, const trs_q *b)
     return r;
 }
 
-static cbx_iv q_dot(const trs_q *a, const trs_q *b)
-{
-    return iv_add(iv_add(iv_mul(a->c[0], b->c[0]), iv_mul(a->c[1], b->c[1])),
-                  iv_add(iv_mul(a->c[2], b->c[2]), iv_mul(a->c[3], b->c[3])));
-}
-
 /* (1 - s) a + s b for the real s of a double in [0, 1]. */
 static trs_q q_blend(const trs_q *a, const trs_q *b, double s)
 {
