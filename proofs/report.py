@@ -29,7 +29,7 @@ JOBS = {
     'B32': 'binary32 algorithms (src/algo/*.c)',
     'S64': 'binary64 smoke tests', 'S32': 'binary32 smoke tests',
     'I64': 'binary64 interval matrices (proofs/imat.c)', 'SI64': 'binary64 interval-matrix smoke tests',
-    'T64': 'binary64 interval arithmetic of the rotation motion (proofs/trs.c)',
+    'T64': 'binary64 rotation motion: interval arithmetic, quaternion boxes, cells (proofs/trs.c)',
     'ST64': 'binary64 rotation-motion smoke tests',
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
     'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',

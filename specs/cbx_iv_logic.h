@@ -60,6 +60,9 @@
     logic real lerp_hi(real x0, real x1, real a, real b) = \max(x0 + a*(x1 - x0), x0 + b*(x1 - x0));
     // (80 u, binary64: CBX_U80 of cbx_prec_begin.h)
     logic real lerp_err(real x0, real x1) = 0x1.4p-47 * (\abs(x0) + \abs(x1)) + 0x1p-1060;
+    // those ends widened by that bound: where iv_lerp's ends lie
+    logic real lerp_wlo(real x0, real x1, real a, real b) = lerp_lo(x0, x1, a, b) - lerp_err(x0, x1);
+    logic real lerp_whi(real x0, real x1, real a, real b) = lerp_hi(x0, x1, a, b) + lerp_err(x0, x1);
     // a product's exact ends over [ml, mh] x [sl, sh], both ends of the
     // second factor in [l, h]: within those over [ml, mh] x [l, h], and
     // its largest corner no larger

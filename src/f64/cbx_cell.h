@@ -29,17 +29,17 @@
     // error bound (tightness)
     predicate cell_v(double lo, double hi, cbx_iv r, real x0, real x1, real a, real b) =
       \is_finite(lo) && \is_finite(hi) && cell_prod(lo, hi, r.lo, r.hi, x0, x1 - x0, a, b)
-      && lo >= itmin(r.lo, r.hi, lerp_lo(x0, x1, a, b) - lerp_err(x0, x1), lerp_hi(x0, x1, a, b) + lerp_err(x0, x1))
-                - (CBX_U12 * itmag(r.lo, r.hi, lerp_lo(x0, x1, a, b) - lerp_err(x0, x1), lerp_hi(x0, x1, a, b) + lerp_err(x0, x1))
+      && lo >= itmin(r.lo, r.hi, lerp_wlo(x0, x1, a, b), lerp_whi(x0, x1, a, b))
+                - (CBX_U12 * itmag(r.lo, r.hi, lerp_wlo(x0, x1, a, b), lerp_whi(x0, x1, a, b))
                    + CBX_ETA512)
-      && hi <= itmax(r.lo, r.hi, lerp_lo(x0, x1, a, b) - lerp_err(x0, x1), lerp_hi(x0, x1, a, b) + lerp_err(x0, x1))
-                + (CBX_U12 * itmag(r.lo, r.hi, lerp_lo(x0, x1, a, b) - lerp_err(x0, x1), lerp_hi(x0, x1, a, b) + lerp_err(x0, x1))
+      && hi <= itmax(r.lo, r.hi, lerp_wlo(x0, x1, a, b), lerp_whi(x0, x1, a, b))
+                + (CBX_U12 * itmag(r.lo, r.hi, lerp_wlo(x0, x1, a, b), lerp_whi(x0, x1, a, b))
                    + CBX_ETA512);
     // An entry [lo, hi] of column 3: finite; it holds x0 + s (x1 - x0) for
     // every s in [a, b]; each end within e of the exact end
     predicate cell_t(double lo, double hi, real x0, real x1, real a, real b) =
       \is_finite(lo) && \is_finite(hi) && lerp_in(lo, hi, x0, x1 - x0, a, b)
-      && lo >= lerp_lo(x0, x1, a, b) - lerp_err(x0, x1) && hi <= lerp_hi(x0, x1, a, b) + lerp_err(x0, x1);
+      && lo >= lerp_wlo(x0, x1, a, b) && hi <= lerp_whi(x0, x1, a, b);
 */
 
 /* Three entries of a column. */
@@ -61,8 +61,8 @@ static inline trs_col cell_col(const trs_rot *r, int j, double x0, double x1, do
     int i;
     /*@ assert m: mono(x1 - x0, a, 1) && msign(x1 - x0, a) && mono(x1 - x0, b, 1) && msign(x1 - x0, b); */
     /*@ assert ab: lerp_pt(sc.lo, sc.hi, x0, x1 - x0, a) && lerp_pt(sc.lo, sc.hi, x0, x1 - x0, b); */
-    /*@ assert w: lerp_lo(x0, x1, a, b) - lerp_err(x0, x1) <= sc.lo <= lerp_hi(x0, x1, a, b) + lerp_err(x0, x1)
-                  && lerp_lo(x0, x1, a, b) - lerp_err(x0, x1) <= sc.hi <= lerp_hi(x0, x1, a, b) + lerp_err(x0, x1); */
+    /*@ assert w: lerp_wlo(x0, x1, a, b) <= sc.lo <= lerp_whi(x0, x1, a, b)
+                  && lerp_wlo(x0, x1, a, b) <= sc.hi <= lerp_whi(x0, x1, a, b); */
     /*@ assert rng: iv_rng(sc.lo, sc.hi, CBX_SB); */
     /*@ loop invariant i: 0 <= i <= 3;
         loop invariant done: \forall integer k; 0 <= k < i ==> cell_v(c.e[k].lo, c.e[k].hi, r->e[k][j], x0, x1, a, b);
@@ -72,7 +72,7 @@ static inline trs_col cell_col(const trs_rot *r, int j, double x0, double x1, do
     for (i = 0; i < 3; i++) {
         cbx_iv e = iv_mul(r->e[i][j], sc);
         /*@ assert sub: it_sub(r->e[i][j].lo, r->e[i][j].hi, sc.lo, sc.hi,
-                               lerp_lo(x0, x1, a, b) - lerp_err(x0, x1), lerp_hi(x0, x1, a, b) + lerp_err(x0, x1)); */
+                               lerp_wlo(x0, x1, a, b), lerp_whi(x0, x1, a, b)); */
         /*@ assert in: cell_prod(e.lo, e.hi, r->e[i][j].lo, r->e[i][j].hi, x0, x1 - x0, a, b); */
         /*@ assert v: cell_v(e.lo, e.hi, r->e[i][j], x0, x1, a, b); */
         c.e[i] = e;

@@ -27,9 +27,10 @@
  * end), the rotation matrices of a box of unit quaternions
  * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box)
  * and each cell's interval matrix from them (src/f64/cbx_cell.h: every
- * entry R_ij S_j(s) and T_i(s) for every s of the cell).  Tested only (tests/test_trs.c, against MPFR): what remains in this file,
- * the quaternion path (normalisation, bisection, the arc box, the choice
- * of the shorter arc) and the cells' loop (proofs/README.md, "Rotation
+ * entry R_ij S_j(s) and T_i(s) for every s of the cell).  Tested only
+ * (tests/test_trs.c, against MPFR): what remains in this file, the
+ * quaternion path (normalisation, bisection, the arc box, the choice of
+ * the shorter arc) and the cells' loop (proofs/README.md, "Rotation
  * motion").
  */
 #include <stdint.h>
