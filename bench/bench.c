@@ -258,6 +258,7 @@ typedef struct bench_ctx {
      * boxes in front of each camera */
     cbx_proj *pm;
     cbx_box *pin;
+    double *psc, *psr;        /* balls: the boxes' centres and half-sizes  */
     /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
      * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
     cbx_trs *rk0, *rk1;
@@ -449,6 +450,9 @@ CBX_KERNEL(k_sphbox, cbx_box, cbx_transform_box(&b->a[i], &unit_box, &o[i]))
 /* projective maps */
 REF_KERNEL(k_proj_ref, cbx_box, ref_proj8(&b->pm[i], &b->pin[i], &o[i]))
 CBX_KERNEL(k_proj, cbx_box, cbx_project_box(&b->pm[i], &b->pin[i], &o[i]))
+REF_KERNEL(k_psph_ref, cbx_box, ref_psphere(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
+REF_KERNEL(k_psph_box, cbx_box, ref_psphere_box8(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
+CBX_KERNEL(k_psph, cbx_box, cbx_project_sphere(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
 static const double t_end[2] = { 0.0, 1.0 };
 static double t_128[128];
 REF_KERNEL(k_rot_end, cbx_box, ref_trs_samples(&b->rk0[i], &b->rk1[i], 0, t_end, 2, &b->rin[i], &o[i]))
@@ -1147,6 +1151,12 @@ static void define_rows(bench_ctx *b, const sizes *z)
     unsound(add_row(G_P, 1, "P-R", "projective: 8 corners divided by w, RN (pbrt, three.js)", k_proj_ref,
                     n, P, 0, bsz, MK_NONE));
     add_row(G_P, 0, "P", "projective: certbox `cbx_project_box`", k_proj, n, P, 0, bsz, MK_NONE);
+    unsound(add_row(G_P, 0, "PS-R", "projected ball: closed form (Mara and McGuire), RN", k_psph_ref,
+                    n, P, 0, bsz, MK_NONE));
+    unsound(add_row(G_P, 0, "PS-8", "projected ball: its box's 8 corners divided by w, RN (looser)", k_psph_box,
+                    n, P, 0, bsz, MK_NONE));
+    add_row(G_P, 0, "PS", "projected ball: certbox `cbx_project_sphere` (certified closed form)", k_psph,
+            n, P, 0, bsz, MK_NONE);
 
     /* motion with rotation (keyframes 0 to 90 degrees apart), against the
      * union of the endpoint boxes (pbrt-style) */
@@ -1546,6 +1556,8 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
      * of size 2^-6 .. 2^2 in front of it (view depth 2 .. 2^10) */
     b->pm = xmalloc(n * sizeof *b->pm);
     b->pin = xmalloc(n * sizeof *b->pin);
+    b->psc = xmalloc(3 * n * sizeof *b->psc);
+    b->psr = xmalloc(n * sizeof *b->psr);
     rng.s = seed + 7;
     for (k = 0; k < n; k++) {
         double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
@@ -1581,7 +1593,9 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
             for (j = 0; j < 3; j++) c += R[j][i] * (vc[j] - T[j]);
             b->pin[k].lo[i] = c - h;
             b->pin[k].hi[i] = c + h;
+            b->psc[3 * k + i] = c;
         }
+        b->psr[k] = h;
     }
     gen_rot(b, n, seed);
 }

@@ -88,6 +88,39 @@ static inline void ref_proj8(const cbx_proj *p, const cbx_box *in, cbx_box *out)
     }
 }
 
+/* The projected ball in closed form, round to nearest: the roots of
+ * (A - t B)^2 = r^2 |a - t b|^2 per axis (Mara and McGuire 2013). */
+static inline void ref_psphere(const cbx_proj *p, const double c[3], double r, cbx_box *out)
+{
+    const double *b = p->m[3];
+    double B = b[0] * c[0] + b[1] * c[1] + b[2] * c[2] + b[3];
+    double r2 = r * r;
+    double al = B * B - r2 * (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]);
+    int i;
+    for (i = 0; i < 3; i++) {
+        const double *a = p->m[i];
+        double A = a[0] * c[0] + a[1] * c[1] + a[2] * c[2] + a[3];
+        double be = A * B - r2 * (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+        double ga = A * A - r2 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        double de = be * be - al * ga;
+        double sq = sqrt(de > 0 ? de : 0);
+        out->lo[i] = (be - sq) / al;
+        out->hi[i] = (be + sq) / al;
+    }
+}
+
+/* The projected ball through its bounding box: 8 corners divided by w. */
+static inline void ref_psphere_box8(const cbx_proj *p, const double c[3], double r, cbx_box *out)
+{
+    cbx_box b;
+    int i;
+    for (i = 0; i < 3; i++) {
+        b.lo[i] = c[i] - r;
+        b.hi[i] = c[i] + r;
+    }
+    ref_proj8(p, &b, out);
+}
+
 static inline void ref_arvo_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
     double lo[3], hi[3];

@@ -20,6 +20,7 @@
 
 #include "certbox.h"
 #include "exact_util.h"
+#include "psph_oracle.h"
 
 #define N_SAMPLES 9
 
@@ -369,6 +370,34 @@ static void show_float(xu_exact *x, int n, const sample *s0)
            cbx_ieee_check() == 0 ? "0 (this build computes as the proofs assume)" : "FAILED");
 }
 
+/* A ball under the same projection (cbx_project_sphere): each end checked
+ * against the exact ends (tests/psph_oracle.c: MPFR with directed
+ * rounding from the exact rational coefficients), the round-to-nearest
+ * closed form beside it. */
+static void show_project_sphere(const cbx_proj *p)
+{
+    static const double c[3] = {-0.1, 0.4, -4.3};
+    const double rad = 0.45;
+    static const char *verdict[3] = {"no (rounded inward)", "yes", "undecided"};
+    cbx_box out;
+    cbx_status st = cbx_project_sphere(p, c, rad, &out);
+    int i;
+    printf("  the ball |x - (%g, %g, %g)| <= %g under it: cbx_project_sphere: status %s\n",
+           c[0], c[1], c[2], rad, cbx_status_name(st));
+    for (i = 0; i < 3; i++) {
+        double nl, nh;
+        int v = pso_contains((const double (*)[4])p->m, c, rad, i, out.lo[i], out.hi[i]);
+        int w;
+        pso_closed_form((const double (*)[4])p->m, c, rad, i, &nl, &nh);
+        w = pso_contains((const double (*)[4])p->m, c, rad, i, nl, nh);
+        printf("  ndc%d in [%22.17g, %22.17g]  contains the exact bound: %s\n", i, out.lo[i], out.hi[i],
+               v == 1 ? "yes" : v == 0 ? "NO" : "undecided");
+        printf("       closed form, RN:  [%22.17g, %22.17g]  contains it: %s\n", nl, nh,
+               verdict[w < 0 ? 2 : w]);
+    }
+    printf("\n");
+}
+
 /* A box under a camera's projection (cbx_project_box), in NDC, with the
  * round-to-nearest 8-corner divide beside it; the exact bounds in mpq. */
 static void show_project(int n)
@@ -419,9 +448,10 @@ static void show_project(int n)
         printf("       8 corners / w, RN: [%22.17g, %22.17g]  contains it: %s\n", nlo, nhi,
                mpq_cmp(t, lo) <= 0 && mpq_cmp(r, hi) >= 0 ? "yes" : "no (rounded inward)");
     }
-    printf("  the cube [-1, 1]^3 around the camera: status %s, out = the whole space: %s\n\n",
+    printf("  the cube [-1, 1]^3 around the camera: status %s, out = the whole space: %s\n",
            cbx_status_name(st2), o2.lo[0] == -HUGE_VAL && o2.hi[0] == HUGE_VAL ? "yes" : "no");
     mpq_clears(X, W, r, lo, hi, t, NULL);
+    show_project_sphere(&p);
 }
 
 /* A box swept by a keyframed rotation: [4, 6] x [-1, 1] x [-1, 1] turned

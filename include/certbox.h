@@ -167,6 +167,7 @@ typedef enum cbx_class {
 #ifdef __FRAMAC__
 #include "cbx_class.h"
 #include "cbx_chain.h"
+#include "cbx_psph.h"
 #endif
 
 
@@ -432,6 +433,60 @@ cbx_status cbx_ball_pieces(const cbx_imat *pieces, size_t n, const double c[3], 
 cbx_status cbx_trs_pieces(const cbx_trs *k0, const cbx_trs *k1, cbx_interp mode, double s0, double s1,
                           unsigned depth, cbx_imat *pieces, size_t cap, size_t *count);
 cbx_status cbx_transform_box_pieces(const cbx_imat *pieces, size_t n, const cbx_box *in, cbx_box *out);
+
+/* ---- a ball under a projective map (a camera's projection) -------------
+ * cbx_project_sphere: the box of {(X_0/W, X_1/W, X_2/W)} over every real
+ * point of the ball |x - c| <= |r|, X_i = m[i][0] x + m[i][1] y +
+ * m[i][2] z + m[i][3] and W row 3 (the projected sphere's screen or NDC
+ * box: the bound of its outline, an ellipse, in closed form; Mara and
+ * McGuire, JCGT 2013).  Each end is the exact end of the image rounded
+ * outward and certified in outward-rounded interval arithmetic.  Proven
+ * (specs/cbx_psph.h: ps_axis, ps_tight): with CBX_OK, W > 0 at every real
+ * point of the ball and lo_i W <= X_i <= hi_i W there, and some point has
+ * X_i / W above hi_i - 2^-20 (1 + |hi_i|) (below lo_i + 2^-20 (1 + |lo_i|));
+ * measured, the ends are within a few units in the last place
+ * (tests/test_psphere.c).
+ *   NaN in *p, c or r                   -> CBX_EINVAL, *out the whole space
+ *   a linear entry, a center coordinate or r above 2^60 in magnitude, a
+ *   translation above 2^120 (or infinite)
+ *                                       -> CBX_ERANGE, *out the whole space
+ *   the ball not clear of the camera plane W = 0 (W's least value on it,
+ *   enclosed, not above 0; always when the ball touches or crosses the
+ *   plane or lies behind it: proven) -> CBX_EBEHIND, *out the whole space
+ *   an end above 2^99 in magnitude, W(c)^2 - r^2 |(m30, m31, m32)|^2 below
+ *   2^-400, or an end that cannot be certified within 2^-20 (about 2^-48
+ *   of the rows' magnitudes at c above 2^-22 of W's least value on the
+ *   ball: a ball very near the camera plane for its distance from the
+ *   origin)
+ *                                       -> CBX_ERANGE, *out the whole space
+ * Binary64 only.  *out may not overlap *p or c. */
+/*@ requires valid: \valid_read(p) && \valid_read(c + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, p) && \separated(out, c + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes ps_nan(p, c, r);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior ball_input:
+      assumes !ps_nan(p, c, r);
+      ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
+      ensures whole: \result != CBX_OK ==> whole_space(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(ps_dom(p, c, r));
+      ensures behind: \old(ps_dom(p, c, r))
+        && !ps_front(\old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                     \old(c[0]), \old(c[1]), \old(c[2]), r) ==> \result == CBX_EBEHIND;
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && ps_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]), \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r)
+        && ps_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]), \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r);
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && ps_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]), \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r)
+        && ps_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]), \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r);
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && ps_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]), \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r)
+        && ps_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]), \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_sphere(const cbx_proj *p, const double c[3], double r, cbx_box *out);
 
 #endif /* binary64 only */
 

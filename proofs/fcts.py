@@ -7,7 +7,7 @@
                                         the functions of TU that call NAME
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
-proj_f.c, trs.c).  It is
+proj_f.c, trs.c, psph.c).  It is
 preprocessed as Frama-C preprocesses it (gcc -E -C -D__FRAMAC__, the
 library's include folders of scripts/incs.sh and specs/); each function
 definition is then attributed to the file the line markers name, under the
@@ -26,6 +26,9 @@ follow the layers of src/:
              interval arithmetic of src/f64/cbx_iv.h, the rotations of
              quaternion boxes of src/f64/cbx_quat.h and the cells' interval
              matrices of src/f64/cbx_cell.h
+    psph     a ball under a projective map (proofs/psph.c): the functions
+             of src/f64/cbx_psph.c (the interval arithmetic they call is
+             proven in trs)
     proj     the projective unit (proofs/proj.c, proj_f.c): functions of
              src/algo/cbx_project.c and src/core/cbx_quot.h, minus split
     projsplit  the same unit's functions marked for -wp-split
@@ -57,7 +60,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The units where only one group is proven (the rest of their code is
 # tested only), so a call from the rest establishes no precondition:
 # proofs/trs.c, where src/f64/cbx_trs.c's path and loop are not proven.
-PARTIAL = {'trs.c': 'trs'}
+PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph'}
 MARK = '/* proof: -wp-split */'
 DEF = re.compile(r'^(?!typedef\b|extern\b)[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\s*\(')
 
@@ -144,16 +147,19 @@ def group(defs, g):
     proj = ('src/algo/cbx_project.c', 'src/core/cbx_quot.h')
     ball = ('src/algo/cbx_sphere.c',)
     trs = ('src/f64/cbx_iv.h', 'src/f64/cbx_quat.h', 'src/f64/cbx_cell.h')
+    psph = ('src/f64/cbx_psph.c',)
     if g == 'split':
         return [n for f, n, s in defs if s and f not in ball]
     if g == 'kernels':
         return [n for f, n, s in defs if not s and (under(f, 'src/core/', '.h') or under(f, 'src/algo/', '.h'))]
     if g == 'f64':
-        return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat]
+        return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat + psph]
     if g == 'imat':
         return [n for f, n, s in defs if f in imat]
     if g == 'trs':
         return [n for f, n, s in defs if f in trs]
+    if g == 'psph':
+        return [n for f, n, s in defs if f in psph]
     if g == 'proj':
         return [n for f, n, s in defs if not s and f in proj]
     if g == 'projsplit':

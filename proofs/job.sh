@@ -23,6 +23,10 @@
 #             src/f64/cbx_quat.h and the cells of src/f64/cbx_cell.h, with
 #             the lemmas of specs/cbx_iv_logic.h and cbx_imat_logic.h; its
 #             smoke tests
+#   PS64, SPS64 a ball under a projective map (proofs/psph.c:
+#             src/f64/cbx_psph.c, on the interval arithmetic of T64, with
+#             the lemmas of specs/cbx_psph.h, cbx_ball.h, cbx_iv_logic.h);
+#             its smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
 #             -wp-split; PA64, PA32 its functions marked for -wp-split;
@@ -108,6 +112,8 @@ case $name in
   I64) TU=proofs/imat.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU imat)" ;;
   SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SG=imat ;;
   T64) TU=proofs/trs.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU trs)" ;;
+  PS64) TU=proofs/psph.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU psph)" ;;
+  SPS64) TU=proofs/psph.c; OPTS="$SMOKE $NOGOALS"; SG=psph ;;
   ST64) TU=proofs/trs.c; OPTS="$SMOKE $NOGOALS"; SG=trs ;;
   P64|P32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS=$WP; SEL="-wp-fct $(fcts $TU proj)" ;;
   PA64|PA32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU projsplit)" ;;

@@ -31,6 +31,8 @@ JOBS = {
     'I64': 'binary64 interval matrices (proofs/imat.c)', 'SI64': 'binary64 interval-matrix smoke tests',
     'T64': 'binary64 rotation motion: interval arithmetic, quaternion boxes, cells (proofs/trs.c)',
     'ST64': 'binary64 rotation-motion smoke tests',
+    'PS64': 'binary64 ball under a projective map (proofs/psph.c)',
+    'SPS64': 'binary64 projected-ball smoke tests',
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
     'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',
     'SP64': 'binary64 projective-bound smoke tests', 'SP32': 'binary32 projective-bound smoke tests',

@@ -124,6 +124,21 @@ case_ cell-translation-lower src/f64/cbx_cell.h cell_imat proofs/trs.c k,lin,tr 
 case_ qdot-term-widened src/f64/cbx_quat.h q_dot proofs/trs.c one,rng,p,srng,s,near 'ensures_near\|assert_srng\|assert_s' \
   "    s23 = iv_add(p2, p3);" \
   "    s23 = iv_add(p2, iv_hull(p3, iv_pt(0.0)));" - &
+# 17. a projected ball's upper end: the soundness check dropped (unsound:
+#    the end is no longer shown above the image)
+case_ psph-hi-unchecked src/f64/cbx_psph.c ps_find proofs/psph.c fin,hi,lo ensures_hi \
+  "            int sound = up != 0 ? sh.hi <= 0.0 : sl.lo >= 0.0;" \
+  "            int sound = up != 0 ? 1 : sl.lo >= 0.0;" - &
+# 18. a projected ball's tightness: the span allowed twice as wide (still
+#    sound; the 2^-20 postcondition must fail)
+case_ psph-span-doubled src/f64/cbx_psph.c ps_span proofs/psph.c w,q,span ensures_span \
+  "    return s <= q;" \
+  "    return s <= cbx_add_up(q, q);" - &
+# 19. a projected ball: the camera-plane check skipped (unsound: W may
+#    vanish on the ball)
+case_ psph-front-skipped src/f64/cbx_psph.c cbx_project_sphere proofs/psph.c '' 'requires_front' \
+  "        if (!ps_in_front(w0, w1, w2, wt, c0, c1, c2, r)) {" \
+  "        if (c0 != c0) {" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

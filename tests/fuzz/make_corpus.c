@@ -395,6 +395,30 @@ static void project(void)
          -1, 1, -1, 1, -1, 1);
 }
 
+/* fuzz_psphere: control bit 0 W clear, 1 a ball in front of a camera
+ * looking down -z; then the 16 map entries, c0, c1, c2, r
+ * (tests/fuzz/fuzz_psphere.c). */
+static void psphere(void)
+{
+    const char *H = "psphere";
+    seed(H, "camera-front", 0x00, 20, CAM90, 0.2, -0.1, -5, 1);
+    seed(H, "camera-front-forced", 0x02, 20, CAM90, 0.2, -0.1, 5, 1);
+    seed(H, "camera-crossing", 0x00, 20, CAM90, 0, 0, -1, 2);
+    seed(H, "camera-tangent", 0x00, 20, CAM90, 0, 0, -1, 1);
+    seed(H, "camera-behind", 0x00, 20, CAM90, 0, 0, 3, 1);
+    seed(H, "camera-far-tiny", 0x00, 20, 1e6, 0, 0, 0, 0, 1e6, 0, 0, 0, 0, -1, -0.2, 0, 0, -1, 0,
+         1e-3, -1e-3, -1e5, 1e-4);
+    seed(H, "affine-w-const", 0x01, 20, 0.6, -0.8, 0, 5, 0.8, 0.6, 0, -5, 0, 0, 1, 0, 0, 0, 0, 3,
+         1, 2, 3, 0.5);
+    seed(H, "point", 0x00, 20, CAM90, 0.3, 0.3, -2, 0);
+    seed(H, "negative-radius", 0x00, 20, CAM90, 0.3, 0.3, -4, -0.5);
+    seed(H, "edges", 0x01, 20, 0x1p60, -0x1p60, 0x1p60, 0x1p120, 1, 1, 1, -0x1p120, 0, 0, 1, 0,
+         0, 0, 0, 0x1p120, 0x1p60, -0x1p60, 1, 0x1p60);
+    seed(H, "nan-radius", 0x00, 20, CAM90, 0, 0, -5, NaN);
+    seed(H, "inf-center", 0x00, 20, CAM90, 0, INF, -5, 1);
+    seed(H, "zero-w", 0x00, 20, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -411,6 +435,7 @@ int main(int argc, char **argv)
     ellipsoid_box();
     plane();
     project();
+    psphere();
     printf("make_corpus: %d seeds written under %s\n", nwritten, outdir);
     return 0;
 }

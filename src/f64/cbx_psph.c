@@ -1,0 +1,613 @@
+/*
+ * A ball under a projective map (a camera's projection): cbx_project_sphere,
+ * binary64.
+ *
+ * The ball is {c + r q : |q| <= 1}; output axis i is X_i / W, X_i row i of
+ * the map and W row 3.  For a real t, X_i - t W is affine in the point with
+ * linear part k(t) = a - t b (a, b the rows' linear parts), so over the
+ * ball it ranges over e(t) -+ |r| |k(t)|, e(t) its value at the center
+ * (specs/cbx_psph.h).  With W > 0 on the ball (W(c) - |r| |b| > 0), the
+ * exact upper end of X_i / W is the root t* of e(t) + |r| |k(t)| = 0 (the
+ * tangent plane of the dual quadric, Mara and McGuire's bound in closed
+ * form), and the lower end the root of e(t) - |r| |k(t)| = 0.
+ *
+ * The closed form is computed in round-to-nearest (ps_candidate: clamped so
+ * that no operation can overflow, but otherwise unproven); the bound is then
+ * certified: at t = t0 + d the outward-rounded interval enclosure of
+ * e(t) + |r| |k(t)| (ps_gap_at, on the proven interval arithmetic of
+ * src/f64/cbx_iv.h) must be <= 0 (X <= t W on the whole ball: sound), and
+ * at t = t0 - d it must be > 0 (some point has X / W > t0 - d: tight), with
+ * 2 d <= 2^-20 (1 + |t0 + d|).  d starts at 2^-50 (1 + |t0|) (a few units in
+ * the last place; it suffices for most balls) and grows by 4 up to 14
+ * times.  The lower end likewise.  So the contract states, in exact reals,
+ * containment of every point of the ball and both ends within
+ * 2^-20 (1 + |end|) of the exact ends; the measured distance is far below
+ * (tests/test_psphere.c prints it).
+ *
+ * Statuses: NaN anywhere -> CBX_EINVAL; outside the domain (ps_dom: linear
+ * entries, center and radius at most 2^60, translations at most 2^120) ->
+ * CBX_ERANGE; the ball not clear of the camera plane W = 0 (its enclosure
+ * of min W not positive) -> CBX_EBEHIND; an end beyond 2^100 in magnitude,
+ * or one the search cannot certify within 2^-20 (the enclosures' rounding,
+ * about 2^-48 of the rows' magnitudes at c, above 2^-22 of W's least value
+ * on the ball: a ball very near the camera plane for its distance from the
+ * origin) -> CBX_ERANGE.  Every status but
+ * CBX_OK gives the whole space.  Proven in job PS64 (proofs/psph.c).
+ */
+#include "certbox.h"
+#include "cbx_round.h"
+#include "cbx_domain.h"
+#include "cbx_iv.h"
+
+#define PS_M 0x1p60      /* linear entries, center, radius */
+#define PS_T 0x1p120     /* translations */
+#define PS_B 0x1p100     /* an end, and every t the gap is evaluated at */
+#define PS_C 0x1p99      /* a candidate end */
+#define PS_L 0x1p509     /* the candidate's clamp */
+#define PS_TRIES 15
+
+/* ---- input checks ----------------------------------------------------- */
+/*@ requires \valid_read(p) && \valid_read(c + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> ps_nan(p, c, r);
+*/
+static int ps_any_nan(const cbx_proj *p, const double c[3], double r)
+{
+    return cbx_is_nan(p->m[0][0]) | cbx_is_nan(p->m[0][1]) | cbx_is_nan(p->m[0][2]) | cbx_is_nan(p->m[0][3])
+           | cbx_is_nan(p->m[1][0]) | cbx_is_nan(p->m[1][1]) | cbx_is_nan(p->m[1][2]) | cbx_is_nan(p->m[1][3])
+           | cbx_is_nan(p->m[2][0]) | cbx_is_nan(p->m[2][1]) | cbx_is_nan(p->m[2][2]) | cbx_is_nan(p->m[2][3])
+           | cbx_is_nan(p->m[3][0]) | cbx_is_nan(p->m[3][1]) | cbx_is_nan(p->m[3][2]) | cbx_is_nan(p->m[3][3])
+           | cbx_is_nan(c[0]) | cbx_is_nan(c[1]) | cbx_is_nan(c[2]) | cbx_is_nan(r);
+}
+
+/* 1 exactly when -b <= x <= b (x then finite). */
+/*@ requires \is_finite(b);
+    assigns \nothing;
+    ensures \result != 0 <==> (\is_finite(x) && -b <= x <= b);
+*/
+static int ps_in(double x, double b)
+{
+    return x >= -b && x <= b;
+}
+
+/*@ assigns \nothing;
+    ensures \result != 0 <==> (\is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(t)
+                               && ps_row(m0, m1, m2, t));
+*/
+static int ps_row_in(double m0, double m1, double m2, double t)
+{
+    int a = ps_in(m0, PS_M);
+    int b = ps_in(m1, PS_M);
+    int d = ps_in(m2, PS_M);
+    int e = ps_in(t, PS_T);
+    return a && b && d && e;
+}
+
+/*@ requires \valid_read(p) && \valid_read(c + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> ps_dom(p, c, r);
+*/
+static int ps_dom_in(const cbx_proj *p, const double c[3], double r)
+{
+    int r0 = ps_row_in(p->m[0][0], p->m[0][1], p->m[0][2], p->m[0][3]);
+    int r1 = ps_row_in(p->m[1][0], p->m[1][1], p->m[1][2], p->m[1][3]);
+    int r2 = ps_row_in(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3]);
+    int r3 = ps_row_in(p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]);
+    int ct = ps_in(c[0], PS_M) && ps_in(c[1], PS_M) && ps_in(c[2], PS_M) && ps_in(r, PS_M);
+    return r0 && r1 && r2 && r3 && ct;
+}
+
+/* ---- the certificate: e(t) and |r| |k(t)| enclosed --------------------- */
+typedef struct ps_gap { cbx_iv e; cbx_iv k; } ps_gap;
+
+/* a_j - t b_j enclosed (one entry of k(t), or its translation). */
+/*@ requires fin: \is_finite(t) && \is_finite(a) && \is_finite(b);
+    requires rng: -PS_B <= t <= PS_B && -PS_T <= a <= PS_T && -PS_T <= b <= PS_T;
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures rng: iv_rng(\result.lo, \result.hi, 0x1p222);
+    ensures lin: -PS_M <= a <= PS_M && -PS_M <= b <= PS_M ==> iv_rng(\result.lo, \result.hi, 0x1p162);
+    ensures in: iv_has(\result.lo, \result.hi, a - t*b);
+*/
+static cbx_iv ps_k(double t, double a, double b)
+{
+    cbx_iv tp = iv_pt(t);
+    cbx_iv bp = iv_pt(b);
+    cbx_iv p = iv_mul(tp, bp);
+    cbx_iv q;
+    /*@ assert tb: ps_mb(t, b, PS_B, PS_T); */
+    /*@ assert tm: -PS_M <= b <= PS_M ==> ps_mb(t, b, PS_B, PS_M); */
+    /*@ assert pv: itmin(t, t, b, b) == t*b && itmax(t, t, b, b) == t*b && itmag(t, t, b, b) == \abs(t*b); */
+    /*@ assert pr: iv_rng(p.lo, p.hi, 0x1p221); */
+    /*@ assert pm: -PS_M <= b <= PS_M ==> iv_rng(p.lo, p.hi, 0x1p161); */
+    /*@ assert pin: p.lo <= t*b <= p.hi; */
+    q = iv_add(iv_neg(p), iv_pt(a));
+    /*@ assert qin: q.lo <= -(t*b) + a <= q.hi; */
+    return q;
+}
+
+/* x + y enclosed, both in [-m, m] (1 <= m <= 2^400): the sum in
+ * [-3 m, 3 m]. */
+/*@ requires fin: \is_finite(x.lo) && \is_finite(x.hi) && \is_finite(y.lo) && \is_finite(y.hi)
+                  && \is_finite(m);
+    requires rng: 1 <= m <= 0x1p400 && iv_rng(x.lo, x.hi, m) && iv_rng(y.lo, y.hi, m);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures rng: iv_rng(\result.lo, \result.hi, 3*m);
+    ensures in: \forall real u, v; iv_has(x.lo, x.hi, u) && iv_has(y.lo, y.hi, v)
+                  ==> iv_has(\result.lo, \result.hi, u + v);
+*/
+static cbx_iv ps_sum(cbx_iv x, cbx_iv y, double m)
+{
+    (void)m;
+    return iv_add(x, y);
+}
+
+/* (a - t b) c enclosed, from the enclosure k of a - t b. */
+/*@ requires fin: \is_finite(t) && \is_finite(a) && \is_finite(b) && \is_finite(c)
+                  && \is_finite(k.lo) && \is_finite(k.hi);
+    requires rng: iv_rng(k.lo, k.hi, 0x1p162) && -PS_M <= c <= PS_M;
+    requires in: iv_has(k.lo, k.hi, a - t*b);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures rng: iv_rng(\result.lo, \result.hi, 0x1p223);
+    ensures in: iv_has(\result.lo, \result.hi, (a - t*b)*c);
+*/
+static cbx_iv ps_kc(double t, double a, double b, cbx_iv k, double c)
+{
+    (void)t; (void)a; (void)b;
+    cbx_iv q = iv_mul(k, iv_pt(c));
+    /*@ assert b1: ps_mb(k.lo, c, 0x1p162, PS_M) && ps_mb(k.hi, c, 0x1p162, PS_M); */
+    /*@ assert b1l: -0x1p222 <= k.lo*c <= 0x1p222; */
+    /*@ assert b1h: -0x1p222 <= k.hi*c <= 0x1p222; */
+    /*@ assert b2: ps_itb(k.lo, k.hi, c, c, 0x1p222); */
+    /*@ assert in: prod_at(q.lo, q.hi, a - t*b, c); */
+    return q;
+}
+
+/* (a - t b)^2 enclosed, from the enclosure k of a - t b. */
+/*@ requires fin: \is_finite(t) && \is_finite(a) && \is_finite(b)
+                  && \is_finite(k.lo) && \is_finite(k.hi);
+    requires rng: iv_rng(k.lo, k.hi, 0x1p162);
+    requires in: iv_has(k.lo, k.hi, a - t*b);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures rng: 0 <= \result.lo && iv_rng(\result.lo, \result.hi, 0x1p325);
+    ensures in: iv_has(\result.lo, \result.hi, (a - t*b)*(a - t*b));
+*/
+static cbx_iv ps_ksq(double t, double a, double b, cbx_iv k)
+{
+    (void)t; (void)a; (void)b;
+    cbx_iv q = iv_sqr(k);
+    /*@ assert b1: ps_mb(k.lo, k.lo, 0x1p162, 0x1p162) && ps_mb(k.hi, k.hi, 0x1p162, 0x1p162); */
+    /*@ assert b2: sqmax(k.lo, k.hi) <= 0x1p324; */
+    /*@ assert in: sq_at(q.lo, q.hi, a - t*b); */
+    return q;
+}
+
+/* e(t) = sum_j (a_j - t b_j) c_j + (a3 - t b3) enclosed, from the
+ * enclosures of its four terms. */
+/*@ requires fin: \is_finite(t) && \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2)
+                  && \is_finite(q0.lo) && \is_finite(q0.hi) && \is_finite(q1.lo) && \is_finite(q1.hi)
+                  && \is_finite(q2.lo) && \is_finite(q2.hi) && \is_finite(k3.lo) && \is_finite(k3.hi);
+    requires rng: iv_rng(q0.lo, q0.hi, 0x1p223) && iv_rng(q1.lo, q1.hi, 0x1p223)
+                  && iv_rng(q2.lo, q2.hi, 0x1p223) && iv_rng(k3.lo, k3.hi, 0x1p222);
+    requires in: iv_has(q0.lo, q0.hi, (a0 - t*b0)*c0) && iv_has(q1.lo, q1.hi, (a1 - t*b1)*c1)
+                 && iv_has(q2.lo, q2.hi, (a2 - t*b2)*c2) && iv_has(k3.lo, k3.hi, a3 - t*b3);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures rng: iv_rng(\result.lo, \result.hi, 0x1p230);
+    ensures in: iv_has(\result.lo, \result.hi, ps_e(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2));
+*/
+static cbx_iv ps_esum(double t, double a0, double a1, double a2, double a3,
+                      double b0, double b1, double b2, double b3, double c0, double c1, double c2,
+                      cbx_iv q0, cbx_iv q1, cbx_iv q2, cbx_iv k3)
+{
+    (void)t; (void)a0; (void)a1; (void)a2; (void)a3; (void)b0; (void)b1; (void)b2; (void)b3;
+    (void)c0; (void)c1; (void)c2;
+    cbx_iv e01 = ps_sum(q0, q1, 0x1p223);
+    cbx_iv e23 = ps_sum(q2, k3, 0x1p223);
+    cbx_iv e = ps_sum(e01, e23, 0x1p225);
+    /*@ assert i01: iv_has(e01.lo, e01.hi, (a0 - t*b0)*c0 + (a1 - t*b1)*c1); */
+    /*@ assert i23: iv_has(e23.lo, e23.hi, (a2 - t*b2)*c2 + (a3 - t*b3)); */
+    /*@ assert i: iv_has(e.lo, e.hi, ((a0 - t*b0)*c0 + (a1 - t*b1)*c1) + ((a2 - t*b2)*c2 + (a3 - t*b3))); */
+    return e;
+}
+
+/* |r| |k(t)| enclosed, from the enclosures of k's three entries. */
+/*@ requires fin: \is_finite(t) && \is_finite(a0) && \is_finite(a1) && \is_finite(a2)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(r)
+                  && \is_finite(k0.lo) && \is_finite(k0.hi) && \is_finite(k1.lo) && \is_finite(k1.hi)
+                  && \is_finite(k2.lo) && \is_finite(k2.hi);
+    requires rng: iv_rng(k0.lo, k0.hi, 0x1p162) && iv_rng(k1.lo, k1.hi, 0x1p162)
+                  && iv_rng(k2.lo, k2.hi, 0x1p162) && -PS_M <= r <= PS_M;
+    requires in: iv_has(k0.lo, k0.hi, a0 - t*b0) && iv_has(k1.lo, k1.hi, a1 - t*b1)
+                 && iv_has(k2.lo, k2.hi, a2 - t*b2);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
+    ensures rng: iv_rng(\result.lo, \result.hi, 0x1p230);
+    ensures in: iv_has(\result.lo, \result.hi, \abs(r) * ps_n(t, a0, a1, a2, b0, b1, b2));
+*/
+static cbx_iv ps_norm(double t, double a0, double a1, double a2, double b0, double b1, double b2,
+                      double r, cbx_iv k0, cbx_iv k1, cbx_iv k2)
+{
+    double ar = cbx_abs(r);
+    cbx_iv n0 = ps_ksq(t, a0, b0, k0);
+    cbx_iv n1 = ps_ksq(t, a1, b1, k1);
+    cbx_iv n2 = ps_ksq(t, a2, b2, k2);
+    cbx_iv n01 = ps_sum(n0, n1, 0x1p325);
+    cbx_iv n = ps_sum(n01, n2, 0x1p327);
+    cbx_iv s;
+    cbx_iv g;
+    /*@ assert i01: iv_has(n01.lo, n01.hi, (a0 - t*b0)*(a0 - t*b0) + (a1 - t*b1)*(a1 - t*b1)); */
+    /*@ assert i: iv_has(n.lo, n.hi, nrm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)); */
+    /*@ assert rn: rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2) >= 0
+                   && rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2) * rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)
+                      == nrm3(a0 - t*b0, a1 - t*b1, a2 - t*b2); */
+    /*@ assert nr: 0 <= n.hi <= 0x1p329; */
+    s = iv_sqrt(n);
+    /*@ assert sq: sq_at(n.lo, n.hi, rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)); */
+    /*@ assert sin: iv_has(s.lo, s.hi, rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)); */
+    /*@ assert sb: s.hi <= CBX_ETA512 || (s.hi - CBX_ETA512) * (s.hi - CBX_ETA512) <= 0x1p330; */
+    /*@ assert sl: sql(s.hi - CBX_ETA512, 0x1p165); */
+    /*@ assert sr: 0 <= s.lo <= s.hi <= 0x1p166; */
+    g = iv_mul(iv_pt(ar), s);
+    /*@ assert kb: ps_mb(ar, s.lo, PS_M, 0x1p166) && ps_mb(ar, s.hi, PS_M, 0x1p166); */
+    /*@ assert kbl: -0x1p226 <= ar*s.lo <= 0x1p226; */
+    /*@ assert kbh: -0x1p226 <= ar*s.hi <= 0x1p226; */
+    /*@ assert k1: ps_itb(ar, ar, s.lo, s.hi, 0x1p226); */
+    /*@ assert kin: prod_at(g.lo, g.hi, ar, rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)); */
+    /*@ assert kin2: prod_at(g.lo, g.hi, \abs(r), rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)); */
+    /*@ assert kabs: iv_has(g.lo, g.hi, \abs(r) * rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2)); */
+    /*@ assert pn: ps_n(t, a0, a1, a2, b0, b1, b2) == rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2); */
+    return g;
+}
+
+/* e(t) and |r| |k(t)| (specs/cbx_psph.h: ps_e, ps_n), outward-rounded. */
+/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    requires t: \is_finite(t) && -PS_B <= t <= PS_B;
+    assigns \nothing;
+    ensures fin: \is_finite(\result.e.lo) && \is_finite(\result.e.hi)
+                 && \is_finite(\result.k.lo) && \is_finite(\result.k.hi);
+    ensures rng: iv_rng(\result.e.lo, \result.e.hi, 0x1p230) && iv_rng(\result.k.lo, \result.k.hi, 0x1p230);
+    ensures e: iv_has(\result.e.lo, \result.e.hi, ps_e(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2));
+    ensures k: iv_has(\result.k.lo, \result.k.hi, \abs(r) * ps_n(t, a0, a1, a2, b0, b1, b2));
+*/
+static ps_gap ps_gap_at(double t, double a0, double a1, double a2, double a3,
+                        double b0, double b1, double b2, double b3,
+                        double c0, double c1, double c2, double r)
+{
+    ps_gap g;
+    cbx_iv k0 = ps_k(t, a0, b0);
+    cbx_iv k1 = ps_k(t, a1, b1);
+    cbx_iv k2 = ps_k(t, a2, b2);
+    cbx_iv k3 = ps_k(t, a3, b3);
+    cbx_iv q0 = ps_kc(t, a0, b0, k0, c0);
+    cbx_iv q1 = ps_kc(t, a1, b1, k1, c1);
+    cbx_iv q2 = ps_kc(t, a2, b2, k2, c2);
+    g.e = ps_esum(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, q0, q1, q2, k3);
+    g.k = ps_norm(t, a0, a1, a2, b0, b1, b2, r, k0, k1, k2);
+    return g;
+}
+
+/* ---- the candidate: the closed form in round-to-nearest ---------------- */
+/* x clamped to [-2^509, 2^509] (NaN to -2^509): a product of two clamped
+ * values cannot overflow.  In the domain no intermediate value reaches the
+ * clamp (they stay below 2^490); it only makes the absence of overflow
+ * provable without tracking each value. */
+/*@ assigns \nothing;
+    ensures fin: \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double ps_cl(double x)
+{
+    double r = -PS_L;
+    if (x >= -PS_L && x <= PS_L) {
+        r = x;
+    } else if (x > PS_L) {
+        r = PS_L;
+    }
+    return r;
+}
+
+/*@ requires \is_finite(x) && \is_finite(y) && -PS_L <= x <= PS_L && -PS_L <= y <= PS_L;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double ps_mul(double x, double y)
+{
+    /*@ assert b: ps_mb(x, y, PS_L, PS_L); */
+    return ps_cl(x * y);
+}
+
+/*@ requires \is_finite(x) && \is_finite(y) && -PS_L <= x <= PS_L && -PS_L <= y <= PS_L;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double ps_add(double x, double y)
+{
+    return ps_cl(x + y);
+}
+
+/*@ requires \is_finite(x) && \is_finite(y) && -PS_L <= x <= PS_L && -PS_L <= y <= PS_L;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double ps_sub(double x, double y)
+{
+    return ps_cl(x - y);
+}
+
+/*@ requires \is_finite(m0) && \is_finite(m1) && \is_finite(m2) && \is_finite(n0) && \is_finite(n1) && \is_finite(n2);
+    requires -PS_L <= m0 <= PS_L && -PS_L <= m1 <= PS_L && -PS_L <= m2 <= PS_L;
+    requires -PS_L <= n0 <= PS_L && -PS_L <= n1 <= PS_L && -PS_L <= n2 <= PS_L;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double ps_dot(double m0, double m1, double m2, double n0, double n1, double n2)
+{
+    return ps_add(ps_add(ps_mul(m0, n0), ps_mul(m1, n1)), ps_mul(m2, n2));
+}
+
+/* Both ends of axis (a, b) in round-to-nearest: with A = X(c), B = W(c),
+ * the roots of (A - t B)^2 = r^2 |a - t b|^2, that is
+ * t = (h -+ sqrt(D)) / (B^2 - r^2 |b|^2), h = A B - r^2 a.b,
+ * D = r^2 (|A b - B a|^2 - r^2 |a x b|^2).  ok 0 when the denominator is
+ * not well above 0 or an end is beyond 2^99. */
+typedef struct ps_cand { double lo, hi; int ok; } ps_cand;
+
+/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    assigns \nothing;
+    ensures ok: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
+                && -PS_C <= \result.lo <= PS_C && -PS_C <= \result.hi <= PS_C;
+*/
+static ps_cand ps_candidate(double a0, double a1, double a2, double a3,
+                            double b0, double b1, double b2, double b3,
+                            double c0, double c1, double c2, double r)
+{
+    ps_cand q;
+    double A = ps_add(ps_dot(a0, a1, a2, c0, c1, c2), a3);
+    double B = ps_add(ps_dot(b0, b1, b2, c0, c1, c2), b3);
+    double r2 = ps_mul(r, r);
+    double nb = ps_dot(b0, b1, b2, b0, b1, b2);
+    double ab = ps_dot(a0, a1, a2, b0, b1, b2);
+    double v0 = ps_sub(ps_mul(A, b0), ps_mul(B, a0));
+    double v1 = ps_sub(ps_mul(A, b1), ps_mul(B, a1));
+    double v2 = ps_sub(ps_mul(A, b2), ps_mul(B, a2));
+    double x0 = ps_sub(ps_mul(a1, b2), ps_mul(a2, b1));
+    double x1 = ps_sub(ps_mul(a2, b0), ps_mul(a0, b2));
+    double x2 = ps_sub(ps_mul(a0, b1), ps_mul(a1, b0));
+    double vv = ps_dot(v0, v1, v2, v0, v1, v2);
+    double xx = ps_dot(x0, x1, x2, x0, x1, x2);
+    double dd = ps_mul(r2, ps_sub(vv, ps_mul(r2, xx)));
+    double den = ps_sub(ps_mul(B, B), ps_mul(r2, nb));
+    double h = ps_sub(ps_mul(A, B), ps_mul(r2, ab));
+    double sq = 0.0;
+    q.lo = 0.0;
+    q.hi = 0.0;
+    q.ok = 0;
+    if (dd > 0.0) {
+        sq = cbx_sqrt_rn(dd);
+    }
+    /*@ assert sqq: sql(sq, PS_L); */
+    /*@ assert sq: \is_finite(sq) && 0 <= sq <= PS_L; */
+    if (den >= 0x1p-400) {
+        double nl = ps_sub(h, sq);
+        double nh = ps_add(h, sq);
+        cbx_iv tl = iv_div(iv_pt(nl), iv_pt(den));
+        cbx_iv th = iv_div(iv_pt(nh), iv_pt(den));
+        if (ps_in(tl.lo, PS_C) && ps_in(th.hi, PS_C)) {
+            q.lo = tl.lo;
+            q.hi = th.hi;
+            q.ok = 1;
+        }
+    }
+    return q;
+}
+
+/* ---- the search --------------------------------------------------------- */
+/* 1 only if x - y <= 2^-20 (1 + |v|) (specs/cbx_psph.h: ps_tau). */
+/*@ requires fin: \is_finite(x) && \is_finite(y) && \is_finite(v);
+    requires rng: -PS_B <= x <= PS_B && -PS_B <= y <= PS_B && -PS_B <= v <= PS_B;
+    assigns \nothing;
+    ensures span: \result != 0 ==> x - y <= ps_tau(v);
+*/
+static int ps_span(double x, double y, double v)
+{
+    double s = cbx_add_up(x, -y);
+    double w = cbx_add_dn(1.0, cbx_abs(v));
+    double q = cbx_mul_rn(w, 0x1p-21);
+    /*@ assert w: 0 <= w <= 1 + \abs(v); */
+    /*@ assert q: q <= w * 0x1p-21 * (1 + CBX_U) + CBX_ETA; */
+    return s <= q;
+}
+
+typedef struct ps_fin { double v, w; int ok; } ps_fin;
+
+/* One end from the candidate t0.  up != 0, the upper end: v = t0 + d with
+ * X <= v W on the whole ball, w = t0 - d with some point above w, and
+ * v - w <= ps_tau(v).  up == 0, the lower end: v = t0 - d with X >= v W
+ * on the whole ball, w = t0 + d with some point below w, w - v <=
+ * ps_tau(v).  The enclosure of e(t) + |r| |k(t)| (upper end) or
+ * e(t) - |r| |k(t)| (lower end) at both points decides. */
+/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    requires t0: \is_finite(t0) && -PS_C <= t0 <= PS_C;
+    assigns \nothing;
+    ensures fin: \result.ok != 0 ==> \is_finite(\result.v) && -PS_B <= \result.v <= PS_B;
+    ensures hi: up != 0 && \result.ok != 0 ==>
+      ps_hi(\result.v, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
+      && \result.v - ps_tau(\result.v) <= \result.w
+      && ps_above(\result.w, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+    ensures lo: up == 0 && \result.ok != 0 ==>
+      ps_lo(\result.v, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
+      && \result.w <= \result.v + ps_tau(\result.v)
+      && ps_below(\result.w, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+*/
+static ps_fin ps_find(int up, double t0, double a0, double a1, double a2, double a3,
+                      double b0, double b1, double b2, double b3,
+                      double c0, double c1, double c2, double r)
+{
+    ps_fin f;
+    double d = cbx_mul_rn(cbx_add_rn(1.0, cbx_abs(t0)), 0x1p-50);
+    int k;
+    f.v = 0.0;
+    f.w = 0.0;
+    f.ok = 0;
+    /*@ loop invariant k: 0 <= k <= PS_TRIES;
+        loop invariant d: \is_finite(d) && 0 <= d <= 0x1p93;
+        loop invariant f: f.ok == 0;
+        loop assigns k, d, f;
+        loop variant PS_TRIES - k;
+    */
+    for (k = 0; k < PS_TRIES; k++) {
+        double th = t0 + d;
+        double tl = t0 - d;
+        if (ps_in(th, PS_B) && ps_in(tl, PS_B)) {
+            ps_gap gh = ps_gap_at(th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+            ps_gap gl = ps_gap_at(tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+            cbx_iv sh = iv_add(gh.e, up != 0 ? gh.k : iv_neg(gh.k));
+            cbx_iv sl = iv_add(gl.e, up != 0 ? gl.k : iv_neg(gl.k));
+            /* up: sound at th, tight at tl; down: sound at tl, tight at th */
+            int sound = up != 0 ? sh.hi <= 0.0 : sl.lo >= 0.0;
+            int tight = up != 0 ? sl.lo > 0.0 : sh.hi < 0.0;
+            if (sound && tight && ps_span(th, tl, up != 0 ? th : tl)) {
+                f.v = up != 0 ? th : tl;
+                f.w = up != 0 ? tl : th;
+                f.ok = 1;
+                break;
+            }
+        }
+        if (d > 0x1p90) {
+            break;
+        }
+        d = cbx_mul_rn(d, 4.0);
+    }
+    return f;
+}
+
+/* ---- one output axis ---------------------------------------------------- */
+typedef struct ps_ax { double lo, hi; int ok; } ps_ax;
+
+/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    requires front: ps_front(b0, b1, b2, b3, c0, c1, c2, r);
+    assigns \nothing;
+    ensures ok: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
+      && ps_axis(\result.lo, \result.hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
+      && ps_tight(\result.lo, \result.hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+*/
+static ps_ax ps_axis_of(double a0, double a1, double a2, double a3,
+                        double b0, double b1, double b2, double b3,
+                        double c0, double c1, double c2, double r)
+{
+    ps_ax x;
+    ps_cand q = ps_candidate(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+    x.lo = 0.0;
+    x.hi = 0.0;
+    x.ok = 0;
+    if (q.ok != 0) {
+        ps_fin h = ps_find(1, q.hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+        ps_fin l = ps_find(0, q.lo, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+        if (h.ok != 0 && l.ok != 0) {
+            x.lo = l.v;
+            x.hi = h.v;
+            x.ok = 1;
+            /*@ assert cov: ps_axis(x.lo, x.hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r); */
+            /*@ assert tight: ps_tight(x.lo, x.hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r); */
+        }
+    }
+    return x;
+}
+
+/* W > 0 on the whole ball (ps_front): e(0) - |r| |k(0)| of the row W
+ * itself (a = b = W: X - 0 W is W) enclosed above 0. */
+/*@ requires row: ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    assigns \nothing;
+    ensures front: \result != 0 ==> ps_front(b0, b1, b2, b3, c0, c1, c2, r);
+*/
+static int ps_in_front(double b0, double b1, double b2, double b3, double c0, double c1, double c2, double r)
+{
+    ps_gap g = ps_gap_at(0.0, b0, b1, b2, b3, b0, b1, b2, b3, c0, c1, c2, r);
+    cbx_iv f = iv_add(g.e, iv_neg(g.k));
+    /*@ assert e0: ps_e(0, b0, b1, b2, b3, b0, b1, b2, b3, c0, c1, c2) == aff(b0, b1, b2, b3, c0, c1, c2); */
+    /*@ assert n0: ps_n(0, b0, b1, b2, b0, b1, b2) == rnorm3(b0, b1, b2); */
+    /*@ assert k0: prod_at(g.k.lo, g.k.hi, \abs(r), ps_n(0, b0, b1, b2, b0, b1, b2)); */
+    /*@ assert k1: prod_at(g.k.lo, g.k.hi, \abs(r), rnorm3(b0, b1, b2)); */
+    /*@ assert e1: iv_has(g.e.lo, g.e.hi, aff(b0, b1, b2, b3, c0, c1, c2)); */
+    /*@ assert fl: f.lo <= g.e.lo - g.k.hi; */
+    return f.lo > 0.0;
+}
+
+/* ---- the public function ------------------------------------------------ */
+cbx_status cbx_project_sphere(const cbx_proj *p, const double c[3], double r, cbx_box *out)
+{
+    if (ps_any_nan(p, c, r)) {
+        set_whole(out);
+        return CBX_EINVAL;
+    }
+    if (!ps_dom_in(p, c, r)) {
+        set_whole(out);
+        return CBX_ERANGE;
+    }
+    {
+        double a00 = p->m[0][0];
+        double a01 = p->m[0][1];
+        double a02 = p->m[0][2];
+        double a03 = p->m[0][3];
+        double a10 = p->m[1][0];
+        double a11 = p->m[1][1];
+        double a12 = p->m[1][2];
+        double a13 = p->m[1][3];
+        double a20 = p->m[2][0];
+        double a21 = p->m[2][1];
+        double a22 = p->m[2][2];
+        double a23 = p->m[2][3];
+        double w0 = p->m[3][0];
+        double w1 = p->m[3][1];
+        double w2 = p->m[3][2];
+        double wt = p->m[3][3];
+        double c0 = c[0];
+        double c1 = c[1];
+        double c2 = c[2];
+        ps_ax x0;
+        ps_ax x1;
+        ps_ax x2;
+        if (!ps_in_front(w0, w1, w2, wt, c0, c1, c2, r)) {
+            set_whole(out);
+            return CBX_EBEHIND;
+        }
+        x0 = ps_axis_of(a00, a01, a02, a03, w0, w1, w2, wt, c0, c1, c2, r);
+        x1 = ps_axis_of(a10, a11, a12, a13, w0, w1, w2, wt, c0, c1, c2, r);
+        x2 = ps_axis_of(a20, a21, a22, a23, w0, w1, w2, wt, c0, c1, c2, r);
+        if (x0.ok == 0 || x1.ok == 0 || x2.ok == 0) {
+            set_whole(out);
+            return CBX_ERANGE;
+        }
+        out->lo[0] = x0.lo;
+        out->hi[0] = x0.hi;
+        out->lo[1] = x1.lo;
+        out->hi[1] = x1.hi;
+        out->lo[2] = x2.lo;
+        out->hi[2] = x2.hi;
+        return CBX_OK;
+    }
+}

@@ -1,0 +1,95 @@
+/*
+ * libFuzzer harness: a ball under a projective map (cbx_project_sphere,
+ * binary64) against the exact oracle of tests/psph_oracle.c.
+ *
+ * Input: a control byte, then 20 doubles (encoding: fuzz_common.h): the
+ * 16 entries of the map, row by row, then c0, c1, c2 and r.
+ * Control bits: 0: W clear of the camera plane, row 3 replaced by
+ * (0, 0, 0, |m33|) when m33 is finite and nonzero (a camera at infinity),
+ * so that CBX_OK is frequent; 1: the center moved in front of a camera
+ * looking down -z (c2 = -|c2| - 2 |r| - 1 when finite), with row 3
+ * (0, 0, -1, 0).
+ * Oracle (abort() on failure), for every input, infinities and NaN
+ * included: the status is a documented one, every output field written
+ * and no NaN, the inputs unchanged, and pso_judge's exact verdict: the
+ * statuses and special outputs, CBX_EBEHIND only near the camera plane,
+ * and with CBX_OK every end against its exact value (MPFR) and 8 exact
+ * points of the ball.
+ */
+#include "fuzz_common.h"
+#include "psph_oracle.h"
+
+static unsigned CTL;
+static double V[20], P[4][4], C[3], R;
+static cbx_status ST;
+
+static void dump(FILE *f)
+{
+    fprintf(f, "  control byte = 0x%02x\n", CTL);
+    fz_print_vec(f, "  map", &P[0][0], 16);
+    fz_print_vec(f, "  c", C, 3);
+    fz_print_vec(f, "  r", &R, 1);
+    fz_print_status(f, ST);
+}
+
+static void on_fail(const char *what)
+{
+    fz_fail("%s", what);
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    fz_in in;
+    int i, j;
+    double w[6], c0[3];
+    cbx_proj p, p0;
+    cbx_box o;
+    static pso_stats S;
+    in.p = data;
+    in.n = size;
+    fz_harness = "fuzz_psphere";
+    fz_dump_fn = dump;
+    CTL = fz_byte(&in);
+    for (i = 0; i < 20; i++)
+        V[i] = fz_double(&in);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            P[i][j] = V[4 * i + j];
+    for (i = 0; i < 3; i++)
+        C[i] = V[16 + i];
+    R = V[19];
+    if ((CTL & 1u) && isfinite(P[3][3]) && P[3][3] != 0) {
+        P[3][0] = P[3][1] = P[3][2] = 0;
+        P[3][3] = fabs(P[3][3]);
+    }
+    if ((CTL & 2u) && isfinite(C[2]) && isfinite(R)) {
+        C[2] = -fabs(C[2]) - 2 * fabs(R) - 1;
+        P[3][0] = P[3][1] = P[3][3] = 0;
+        P[3][2] = -1;
+    }
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            p.m[i][j] = P[i][j];
+    for (i = 0; i < 3; i++) {
+        o.lo[i] = o.hi[i] = fz_fill();
+        c0[i] = C[i];
+    }
+    p0 = p;
+    ST = cbx_project_sphere(&p, C, R, &o);
+    if (memcmp(&p, &p0, sizeof p) || memcmp(C, c0, sizeof c0))
+        fz_fail("an input was changed");
+    if (ST != CBX_OK && ST != CBX_EINVAL && ST != CBX_ERANGE && ST != CBX_EBEHIND)
+        fz_fail("status %d is not a documented value", (int)ST);
+    for (i = 0; i < 3; i++) {
+        w[2 * i] = o.lo[i];
+        w[2 * i + 1] = o.hi[i];
+    }
+    fz_check_written(w, 6, "output");
+    if (S.rng == 0)
+        pso_init(&S, 1);
+    pso_judge((const double (*)[4])P, C, R, ST, &o, &S, on_fail);
+    if (S.n_dist > 4096) /* the distances are kept for the tests' summary only */
+        S.n_dist = 0;
+    return 0;
+}
