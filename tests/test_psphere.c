@@ -248,6 +248,35 @@ static void hard_cases(xu_rng *g)
         R = 2;
         run_case("field of view", g);
     }
+    /* each input out of the domain alone (2^121: every check of the chain) */
+    for (k = 0; k < 20; k++) {
+        camera(1.83, 1.0, 0.1, 100, q0, t0);
+        C[0] = 0; C[1] = 0; C[2] = -10; R = 1;
+        if (k < 16)
+            P[k / 4][k % 4] = 0x1p121;
+        else if (k < 19)
+            C[k - 16] = -0x1p121;
+        else
+            R = 0x1p61;
+        run_case("one input out of the domain", g);
+    }
+    /* an end beyond 2^99 on one axis only: row 1 (then row 2) huge against
+     * a constant W, the other axes in range; and a range from 0 to 2^101 */
+    for (k = 1; k <= 3; k++) {
+        memset(P, 0, sizeof P);
+        P[0][0] = P[1][1] = P[2][2] = 1;
+        P[3][3] = 0x1p-10;
+        C[0] = 0.25; C[1] = 0.5; C[2] = 0.75; R = 0.125;
+        if (k < 3) {
+            P[k][3] = 0x1p120;
+        } else {
+            P[0][0] = 0x1p60;
+            P[3][3] = 0x1p-80;
+            C[0] = 0x1p-40;
+            R = 0x1p-40;
+        }
+        run_case("an end beyond 2^99", g);
+    }
     /* the map scaled by 2^-120 .. 2^120 (W from 1e-36 to 1e36) */
     for (k = -120; k <= 120; k += 40) {
         camera(1.83, 1.0, 0.1, 100, q0, t0);

@@ -17,8 +17,9 @@
  * e(t) + |r| |k(t)| (ps_gap_at, on the proven interval arithmetic of
  * src/f64/cbx_iv.h) must be <= 0 (X <= t W on the whole ball: sound), and
  * at t = t0 - d it must be > 0 (some point has X / W > t0 - d: tight), with
- * 2 d <= 2^-20 (1 + |t0 + d|).  d starts at 2^-50 (1 + |t0|) (a few units in
- * the last place; it suffices for most balls) and grows by 4 up to 14
+ * 2 d <= 2^-20 (1 + |t0 + d|).  d starts at 2^-48 (1 + |t0|) (16 units in
+ * the last place: the first try succeeds for nearly every ball; at 2^-50
+ * half of them needed a second) and grows by 4 up to 13
  * times.  The lower end likewise.  So the contract states, in exact reals,
  * containment of every point of the ball and both ends within
  * 2^-20 (1 + |end|) of the exact ends; the measured distance is far below
@@ -44,7 +45,7 @@
 #define PS_B 0x1p100     /* an end, and every t the gap is evaluated at */
 #define PS_C 0x1p99      /* a candidate end */
 #define PS_L 0x1p509     /* the candidate's clamp */
-#define PS_TRIES 15
+#define PS_TRIES 14
 
 /* ---- input checks ----------------------------------------------------- */
 /*@ requires \valid_read(p) && \valid_read(c + (0 .. 2));
@@ -433,12 +434,43 @@ static int ps_span(double x, double y, double v)
 
 typedef struct ps_fin { double v, w; int ok; } ps_fin;
 
+/* One try of an end, at th = t0 + d and tl = t0 - d: the enclosure of
+ * e(t) + |r| |k(t)| (up != 0: the upper end) or e(t) - |r| |k(t)| (up ==
+ * 0: the lower end) at both.  1 when the end (th for up, tl for down) is
+ * sound, the other point shows tightness, and they are within ps_tau of
+ * the end. */
+/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    requires t: \is_finite(th) && \is_finite(tl) && -PS_B <= th <= PS_B && -PS_B <= tl <= PS_B;
+    assigns \nothing;
+    ensures hi: up != 0 && \result != 0 ==>
+      ps_hi(th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
+      && th - ps_tau(th) <= tl && ps_above(tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+    ensures lo: up == 0 && \result != 0 ==>
+      ps_lo(tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
+      && th <= tl + ps_tau(tl) && ps_below(th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+*/
+static int ps_try(int up, double th, double tl, double a0, double a1, double a2, double a3,
+                  double b0, double b1, double b2, double b3, double c0, double c1, double c2, double r)
+{
+    ps_gap gh = ps_gap_at(th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+    ps_gap gl = ps_gap_at(tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+    cbx_iv sh = iv_add(gh.e, up != 0 ? gh.k : iv_neg(gh.k));
+    cbx_iv sl = iv_add(gl.e, up != 0 ? gl.k : iv_neg(gl.k));
+    /* up: sound at th, tight at tl; down: sound at tl, tight at th */
+    int sound = up != 0 ? sh.hi <= 0.0 : sl.lo >= 0.0;
+    int tight = up != 0 ? sl.lo > 0.0 : sh.hi < 0.0;
+    return sound && tight && ps_span(th, tl, up != 0 ? th : tl);
+}
+
 /* One end from the candidate t0.  up != 0, the upper end: v = t0 + d with
  * X <= v W on the whole ball, w = t0 - d with some point above w, and
  * v - w <= ps_tau(v).  up == 0, the lower end: v = t0 - d with X >= v W
  * on the whole ball, w = t0 + d with some point below w, w - v <=
- * ps_tau(v).  The enclosure of e(t) + |r| |k(t)| (upper end) or
- * e(t) - |r| |k(t)| (lower end) at both points decides. */
+ * ps_tau(v).  d grows by 4 per try (ps_try). */
 /*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
     requires ctr: ps_ctr(c0, c1, c2, r);
     requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
@@ -461,7 +493,7 @@ static ps_fin ps_find(int up, double t0, double a0, double a1, double a2, double
                       double c0, double c1, double c2, double r)
 {
     ps_fin f;
-    double d = cbx_mul_rn(cbx_add_rn(1.0, cbx_abs(t0)), 0x1p-50);
+    double d = cbx_mul_rn(cbx_add_rn(1.0, cbx_abs(t0)), 0x1p-48);
     int k;
     f.v = 0.0;
     f.w = 0.0;
@@ -472,25 +504,14 @@ static ps_fin ps_find(int up, double t0, double a0, double a1, double a2, double
         loop assigns k, d, f;
         loop variant PS_TRIES - k;
     */
-    for (k = 0; k < PS_TRIES; k++) {
+    for (k = 0; k < PS_TRIES && d <= 0x1p90; k++) {
         double th = t0 + d;
         double tl = t0 - d;
-        if (ps_in(th, PS_B) && ps_in(tl, PS_B)) {
-            ps_gap gh = ps_gap_at(th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-            ps_gap gl = ps_gap_at(tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-            cbx_iv sh = iv_add(gh.e, up != 0 ? gh.k : iv_neg(gh.k));
-            cbx_iv sl = iv_add(gl.e, up != 0 ? gl.k : iv_neg(gl.k));
-            /* up: sound at th, tight at tl; down: sound at tl, tight at th */
-            int sound = up != 0 ? sh.hi <= 0.0 : sl.lo >= 0.0;
-            int tight = up != 0 ? sl.lo > 0.0 : sh.hi < 0.0;
-            if (sound && tight && ps_span(th, tl, up != 0 ? th : tl)) {
-                f.v = up != 0 ? th : tl;
-                f.w = up != 0 ? tl : th;
-                f.ok = 1;
-                break;
-            }
-        }
-        if (d > 0x1p90) {
+        if (ps_in(th, PS_B) && ps_in(tl, PS_B)
+            && ps_try(up, th, tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)) {
+            f.v = up != 0 ? th : tl;
+            f.w = up != 0 ? tl : th;
+            f.ok = 1;
             break;
         }
         d = cbx_mul_rn(d, 4.0);
