@@ -169,6 +169,23 @@ static void root_end(mpfr_t out, const mpq_t be, const mpfr_t s, int sgn, const 
     mpfr_clears(num, den, (mpfr_ptr)0);
 }
 
+/* B = W(c), bb = |b|^2, r2 = r^2 of the current case, exactly */
+static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
+{
+    mpq_t cq[3];
+    int j;
+    for (j = 0; j < 3; j++) {
+        mpq_init(cq[j]);
+        mpq_set_d(cq[j], C[j]);
+    }
+    aff_q(B, P[3], (mpq_t const *)cq);
+    dot_q(bb, P[3], P[3]);
+    mpq_set_d(r2, R);
+    mpq_mul(r2, r2, r2);
+    for (j = 0; j < 3; j++)
+        mpq_clear(cq[j]);
+}
+
 /* The exact ends of axis i, enclosed: lo in [l0, l1], hi in [h0, h1]
  * (MPFR, PREC bits, directed rounding).  The ball must be in front. */
 static void exact_ends(int i, mpfr_t l0, mpfr_t l1, mpfr_t h0, mpfr_t h1)
@@ -182,13 +199,10 @@ static void exact_ends(int i, mpfr_t l0, mpfr_t l1, mpfr_t h0, mpfr_t h1)
     }
     mpq_inits(A, B, aa, bb, ab, r2, al, be, ga, de, t, NULL);
     mpfr_inits2(PREC, sd, su, (mpfr_ptr)0);
+    ball_w(B, bb, r2);
     aff_q(A, P[i], (mpq_t const *)cq);
-    aff_q(B, P[3], (mpq_t const *)cq);
     dot_q(aa, P[i], P[i]);
-    dot_q(bb, P[3], P[3]);
     dot_q(ab, P[i], P[3]);
-    mpq_set_d(r2, R);
-    mpq_mul(r2, r2, r2);
     mpq_mul(al, B, B);
     mpq_mul(t, r2, bb);
     mpq_sub(al, al, t);        /* alpha = B^2 - r^2 |b|^2 > 0 */
@@ -295,23 +309,6 @@ static void point_check(const cbx_box *o, double u, double v, double s)
     for (j = 0; j < 3; j++)
         mpq_clear(x[j]);
     mpq_clears(q, uq, vq, den, t, X, W, NULL);
-}
-
-/* B = W(c), bb = |b|^2, r2 = r^2 of the current case, exactly */
-static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
-{
-    mpq_t cq[3];
-    int j;
-    for (j = 0; j < 3; j++) {
-        mpq_init(cq[j]);
-        mpq_set_d(cq[j], C[j]);
-    }
-    aff_q(B, P[3], (mpq_t const *)cq);
-    dot_q(bb, P[3], P[3]);
-    mpq_set_d(r2, R);
-    mpq_mul(r2, r2, r2);
-    for (j = 0; j < 3; j++)
-        mpq_clear(cq[j]);
 }
 
 /* ---- the round-to-nearest closed form (shown) ------------------------------- */
