@@ -259,6 +259,8 @@ typedef struct bench_ctx {
     cbx_proj *pm;
     cbx_box *pin;
     double *psc, *psr;        /* balls: the boxes' centres and half-sizes  */
+    cbx_box *pcx;             /* boxes across the near plane               */
+    double *pwn;              /* the near plane (the camera's near distance) */
     /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
      * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
     cbx_trs *rk0, *rk1;
@@ -453,6 +455,9 @@ CBX_KERNEL(k_proj, cbx_box, cbx_project_box(&b->pm[i], &b->pin[i], &o[i]))
 REF_KERNEL(k_psph_ref, cbx_box, ref_psphere(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
 REF_KERNEL(k_psph_box, cbx_box, ref_psphere_box8(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
 CBX_KERNEL(k_psph, cbx_box, cbx_project_sphere(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
+REF_KERNEL(k_pnear_ref, cbx_box, ref_pnear(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
+CBX_KERNEL(k_pnear_front, cbx_box, cbx_project_box_near(&b->pm[i], &b->pin[i], b->pwn[i], &o[i]))
+CBX_KERNEL(k_pnear, cbx_box, cbx_project_box_near(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
 static const double t_end[2] = { 0.0, 1.0 };
 static double t_128[128];
 REF_KERNEL(k_rot_end, cbx_box, ref_trs_samples(&b->rk0[i], &b->rk1[i], 0, t_end, 2, &b->rin[i], &o[i]))
@@ -1157,6 +1162,12 @@ static void define_rows(bench_ctx *b, const sizes *z)
                     n, P, 0, bsz, MK_NONE));
     add_row(G_P, 0, "PS", "projected ball: certbox `cbx_project_sphere` (certified closed form)", k_psph,
             n, P, 0, bsz, MK_NONE);
+    add_row(G_P, 0, "PN", "box in front, clipped at the near plane: certbox `cbx_project_box_near`",
+            k_pnear_front, n, P, 0, bsz, MK_NONE);
+    unsound(add_row(G_P, 0, "PN-XR", "box across the near plane: its clipped vertices divided by w, RN",
+                    k_pnear_ref, n, P, 0, bsz, MK_NONE));
+    add_row(G_P, 0, "PN-X", "box across the near plane: certbox `cbx_project_box_near`", k_pnear,
+            n, P, 0, bsz, MK_NONE);
 
     /* motion with rotation (keyframes 0 to 90 degrees apart), against the
      * union of the endpoint boxes (pbrt-style) */
@@ -1558,6 +1569,8 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     b->pin = xmalloc(n * sizeof *b->pin);
     b->psc = xmalloc(3 * n * sizeof *b->psc);
     b->psr = xmalloc(n * sizeof *b->psr);
+    b->pcx = xmalloc(n * sizeof *b->pcx);
+    b->pwn = xmalloc(n * sizeof *b->pwn);
     rng.s = seed + 7;
     for (k = 0; k < n; k++) {
         double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
@@ -1596,6 +1609,17 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
             b->psc[3 * k + i] = c;
         }
         b->psr[k] = h;
+        b->pwn[k] = nr;
+        /* across the near plane: the box around view depth nr .. 4 nr,
+         * half-size 2 nr .. 8 nr (always cut) */
+        vc[2] = -nr * urand(&rng, 1, 4);
+        h = nr * urand(&rng, 2, 8);
+        for (i = 0; i < 3; i++) {
+            double c = 0;
+            for (j = 0; j < 3; j++) c += R[j][i] * (vc[j] - T[j]);
+            b->pcx[k].lo[i] = c - h;
+            b->pcx[k].hi[i] = c + h;
+        }
     }
     gen_rot(b, n, seed);
 }

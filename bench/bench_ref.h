@@ -88,6 +88,49 @@ static inline void ref_proj8(const cbx_proj *p, const cbx_box *in, cbx_box *out)
     }
 }
 
+/* The box clipped at the near plane W = wn, round to nearest: X / W at the
+ * corners with W >= wn and at the edges' crossings of W = wn (the vertices
+ * of the clipped box; what a renderer that clips would compute). */
+static inline void ref_pnear(const cbx_proj *p, const cbx_box *in, double wn, cbx_box *out)
+{
+    double x[8][3], w[8], lo[3], hi[3];
+    int c, i, j;
+    for (i = 0; i < 3; i++) {
+        lo[i] = HUGE_VAL;
+        hi[i] = -HUGE_VAL;
+    }
+    for (c = 0; c < 8; c++) {
+        for (j = 0; j < 3; j++)
+            x[c][j] = (c >> j) & 1 ? in->hi[j] : in->lo[j];
+        w[c] = p->m[3][0] * x[c][0] + p->m[3][1] * x[c][1] + p->m[3][2] * x[c][2] + p->m[3][3];
+        if (w[c] >= wn)
+            for (i = 0; i < 3; i++) {
+                double y = (p->m[i][0] * x[c][0] + p->m[i][1] * x[c][1] + p->m[i][2] * x[c][2] + p->m[i][3]) / w[c];
+                lo[i] = ref_min(lo[i], y);
+                hi[i] = ref_max(hi[i], y);
+            }
+    }
+    for (c = 0; c < 8; c++)
+        for (j = 0; j < 3; j++) {
+            int d = c | (1 << j);
+            if (d != c && (w[c] >= wn) != (w[d] >= wn)) {
+                double u = (wn - w[c]) / (w[d] - w[c]), y[3];
+                int k;
+                for (k = 0; k < 3; k++)
+                    y[k] = x[c][k] + u * (x[d][k] - x[c][k]);
+                for (i = 0; i < 3; i++) {
+                    double v = (p->m[i][0] * y[0] + p->m[i][1] * y[1] + p->m[i][2] * y[2] + p->m[i][3]) / wn;
+                    lo[i] = ref_min(lo[i], v);
+                    hi[i] = ref_max(hi[i], v);
+                }
+            }
+        }
+    for (i = 0; i < 3; i++) {
+        out->lo[i] = lo[i];
+        out->hi[i] = hi[i];
+    }
+}
+
 /* The projected ball in closed form, round to nearest: the roots of
  * (A - t B)^2 = r^2 |a - t b|^2 per axis (Mara and McGuire 2013). */
 static inline void ref_psphere(const cbx_proj *p, const double c[3], double r, cbx_box *out)

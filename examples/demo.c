@@ -21,6 +21,7 @@
 #include "certbox.h"
 #include "exact_util.h"
 #include "psph_oracle.h"
+#include "pnear_oracle.h"
 
 #define N_SAMPLES 9
 
@@ -398,6 +399,34 @@ static void show_project_sphere(const cbx_proj *p)
     printf("\n");
 }
 
+/* The cube around the camera clipped at the near plane W = 0.1
+ * (cbx_project_box_near): the bound of its visible part, judged by the
+ * exact oracle (tests/pnear_oracle.c: every end against the exact end over
+ * the clipped cube's vertices, in rationals). */
+static int near_failures;
+static void near_fail(const char *what)
+{
+    near_failures++;
+    printf("  oracle: %s\n", what);
+}
+
+static void show_project_near(const cbx_proj *p, const cbx_box *cube)
+{
+    cbx_box out;
+    pno_stats s;
+    cbx_status st = cbx_project_box_near(p, cube, 0.1, &out);
+    int i;
+    printf("  the same cube clipped at the near plane w = 0.1: cbx_project_box_near: status %s\n",
+           cbx_status_name(st));
+    for (i = 0; i < 3; i++)
+        printf("  ndc%d in [%22.17g, %22.17g]\n", i, out.lo[i], out.hi[i]);
+    pno_init(&s, 1);
+    pno_judge((const double (*)[4])p->m, cube, 0.1, st, &out, &s, near_fail);
+    printf("  contains the exact bound of the visible part, each end within 2^-20 of it: %s (%ld exact checks)\n",
+           near_failures == 0 && st == CBX_OK ? "yes" : "NO", s.passed);
+    pno_free(&s);
+}
+
 /* A box under a camera's projection (cbx_project_box), in NDC, with the
  * round-to-nearest 8-corner divide beside it; the exact bounds in mpq. */
 static void show_project(int n)
@@ -451,6 +480,7 @@ static void show_project(int n)
     printf("  the cube [-1, 1]^3 around the camera: status %s, out = the whole space: %s\n",
            cbx_status_name(st2), o2.lo[0] == -HUGE_VAL && o2.hi[0] == HUGE_VAL ? "yes" : "no");
     mpq_clears(X, W, r, lo, hi, t, NULL);
+    show_project_near(&p, &behind);
     show_project_sphere(&p);
 }
 

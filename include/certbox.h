@@ -168,6 +168,7 @@ typedef enum cbx_class {
 #include "cbx_class.h"
 #include "cbx_chain.h"
 #include "cbx_psph.h"
+#include "cbx_pnear.h"
 #endif
 
 
@@ -487,6 +488,76 @@ cbx_status cbx_transform_box_pieces(const cbx_imat *pieces, size_t n, const cbx_
     disjoint behaviors;
 */
 cbx_status cbx_project_sphere(const cbx_proj *p, const double c[3], double r, cbx_box *out);
+
+/* ---- a box under a projective map, clipped at a near plane -------------
+ * cbx_project_box_near: the box of {(X_0/W, X_1/W, X_2/W)} over the real
+ * points of the box *in with W >= wn (the part in front of the near plane
+ * W = wn > 0; X_i and W the rows of *p as for cbx_project_box).  A box
+ * that crosses or lies behind the camera plane gets the bound of its
+ * visible part instead of CBX_EBEHIND.  The exact ends are at the corners
+ * in front and at the crossings of the box's edges with the near plane;
+ * each is computed in round-to-nearest and certified in outward-rounded
+ * interval arithmetic (a Lagrangian certificate: X - s W <= (t - s) wn on
+ * the whole box).  Proven (specs/cbx_pnear.h: pn_axis, pn_tight): with
+ * CBX_OK, lo_i W <= X_i <= hi_i W at every real point of the box with
+ * W >= wn, and some such point has X_i / W above hi_i - 2^-20 (1 + |hi_i|)
+ * (below lo_i + 2^-20 (1 + |lo_i|)); measured, the ends are within a few
+ * units in the last place (tests/test_pnear.c).
+ *   NaN in *p, *in or wn               -> CBX_EINVAL, *out the whole space
+ *   an axis of *in with no point       -> CBX_EMPTY,  *out empty
+ *   a linear entry or a box end above 2^60 in magnitude, a translation
+ *   above 2^120 (or infinite), wn outside [2^-100, 2^120] (wn <= 0
+ *   included)                          -> CBX_ERANGE, *out the whole space
+ *   W < wn on the whole box (certified: nothing in front of the near
+ *   plane; proven)                     -> CBX_EMPTY,  *out empty
+ *   an end above 2^99 in magnitude, or one that cannot be certified
+ *   within 2^-20 (measured: only where W's magnitude on the box is above
+ *   about 2^16 wn, the near plane close to the rounding of W there)
+ *                                      -> CBX_ERANGE, *out the whole space
+ * Binary64 only.  out may be in itself; otherwise *out may not overlap
+ * *p or *in. */
+/*@ requires valid: \valid_read(p) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, p) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes proj_nan(p) || box_nan(in) || \is_NaN(wn);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior empty_input:
+      assumes !proj_nan(p) && !box_nan(in) && !\is_NaN(wn) && is_empty(in);
+      ensures \result == CBX_EMPTY && empty_out(out);
+    behavior box_input:
+      assumes !proj_nan(p) && !box_nan(in) && !\is_NaN(wn) && !is_empty(in);
+      ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE;
+      ensures whole: \result == CBX_ERANGE ==> whole_space(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(pn_dom(p, in, wn));
+      ensures void: \result == CBX_EMPTY ==> empty_out(out)
+        && pn_void(wn, \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                   \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]));
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && pn_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                   \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn)
+        && pn_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                    \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                    \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn);
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && pn_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                   \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn)
+        && pn_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                    \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                    \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn);
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && pn_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                   \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn)
+        && pn_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                    \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                    \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn, cbx_box *out);
 
 #endif /* binary64 only */
 

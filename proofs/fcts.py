@@ -7,7 +7,7 @@
                                         the functions of TU that call NAME
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
-proj_f.c, trs.c, psph.c).  It is
+proj_f.c, trs.c, psph.c, pnear.c).  It is
 preprocessed as Frama-C preprocesses it (gcc -E -C -D__FRAMAC__, the
 library's include folders of scripts/incs.sh and specs/); each function
 definition is then attributed to the file the line markers name, under the
@@ -27,8 +27,12 @@ follow the layers of src/:
              quaternion boxes of src/f64/cbx_quat.h and the cells' interval
              matrices of src/f64/cbx_cell.h
     psph     a ball under a projective map (proofs/psph.c): the functions
-             of src/f64/cbx_psph.c (the interval arithmetic they call is
+             of src/f64/cbx_psph.c and of the enclosures they share,
+             src/f64/cbx_paff.h (the interval arithmetic they call is
              proven in trs)
+    pnear    a box under a projective map clipped at a near plane
+             (proofs/pnear.c): the functions of src/f64/cbx_pnear.c (the
+             enclosures of cbx_paff.h they call are proven in psph)
     proj     the projective unit (proofs/proj.c, proj_f.c): functions of
              src/algo/cbx_project.c and src/core/cbx_quot.h, minus split
     projsplit  the same unit's functions marked for -wp-split
@@ -60,7 +64,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The units where only one group is proven (the rest of their code is
 # tested only), so a call from the rest establishes no precondition:
 # proofs/trs.c, where src/f64/cbx_trs.c's path and loop are not proven.
-PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph'}
+PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph', 'pnear.c': 'pnear'}
 MARK = '/* proof: -wp-split */'
 DEF = re.compile(r'^(?!typedef\b|extern\b)[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\s*\(')
 
@@ -147,19 +151,22 @@ def group(defs, g):
     proj = ('src/algo/cbx_project.c', 'src/core/cbx_quot.h')
     ball = ('src/algo/cbx_sphere.c',)
     trs = ('src/f64/cbx_iv.h', 'src/f64/cbx_quat.h', 'src/f64/cbx_cell.h')
-    psph = ('src/f64/cbx_psph.c',)
+    psph = ('src/f64/cbx_psph.c', 'src/f64/cbx_paff.h')
+    pnear = ('src/f64/cbx_pnear.c',)
     if g == 'split':
         return [n for f, n, s in defs if s and f not in ball]
     if g == 'kernels':
         return [n for f, n, s in defs if not s and (under(f, 'src/core/', '.h') or under(f, 'src/algo/', '.h'))]
     if g == 'f64':
-        return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat + psph]
+        return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat + psph + pnear]
     if g == 'imat':
         return [n for f, n, s in defs if f in imat]
     if g == 'trs':
         return [n for f, n, s in defs if f in trs]
     if g == 'psph':
         return [n for f, n, s in defs if f in psph]
+    if g == 'pnear':
+        return [n for f, n, s in defs if f in pnear]
     if g == 'proj':
         return [n for f, n, s in defs if not s and f in proj]
     if g == 'projsplit':

@@ -26,6 +26,10 @@
 #   PS64, SPS64 a ball under a projective map (proofs/psph.c:
 #             src/f64/cbx_psph.c, on the interval arithmetic of T64, with
 #             the lemmas of specs/cbx_psph.h, cbx_ball.h, cbx_iv_logic.h);
+#             its smoke tests; with the enclosures of src/f64/cbx_paff.h
+#   PN64, SPN64 a box under a projective map clipped at a near plane
+#             (proofs/pnear.c: src/f64/cbx_pnear.c, on T64 and the
+#             enclosures of PS64, with the lemmas of specs/cbx_pnear.h);
 #             its smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
@@ -114,6 +118,8 @@ case $name in
   T64) TU=proofs/trs.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU trs)" ;;
   PS64) TU=proofs/psph.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU psph)" ;;
   SPS64) TU=proofs/psph.c; OPTS="$SMOKE $NOGOALS"; SG=psph ;;
+  PN64) TU=proofs/pnear.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pnear)" ;;
+  SPN64) TU=proofs/pnear.c; OPTS="$SMOKE $NOGOALS"; SG=pnear ;;
   ST64) TU=proofs/trs.c; OPTS="$SMOKE $NOGOALS"; SG=trs ;;
   P64|P32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS=$WP; SEL="-wp-fct $(fcts $TU proj)" ;;
   PA64|PA32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU projsplit)" ;;

@@ -33,6 +33,8 @@ JOBS = {
     'ST64': 'binary64 rotation-motion smoke tests',
     'PS64': 'binary64 ball under a projective map (proofs/psph.c)',
     'SPS64': 'binary64 projected-ball smoke tests',
+    'PN64': 'binary64 box clipped at a near plane (proofs/pnear.c)',
+    'SPN64': 'binary64 clipped-box smoke tests',
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
     'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',
     'SP64': 'binary64 projective-bound smoke tests', 'SP32': 'binary32 projective-bound smoke tests',

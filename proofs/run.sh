@@ -31,7 +31,7 @@ NPROC=$(nproc 2>/dev/null || echo 2)
 JOBS=${CBX_JOBS:-$NPROC}
 export CBX_WP_PAR="${CBX_WP_PAR:-$NPROC}"
 # longest first, so that the pool ends evenly
-LIST="S64 B64a S32 BS64 BS32 B64b B32 P32 K64 PA64 PA32 SP32 I64 A64 K32 P64 A32 SP64 L64 BSA64 BSA32 L32 SI64 T64 PS64 ST64 SPS64"
+LIST="S64 B64a S32 BS64 BS32 B64b B32 P32 K64 PA64 PA32 SP32 I64 A64 K32 P64 A32 SP64 L64 BSA64 BSA32 L32 SI64 T64 PS64 PN64 ST64 SPS64 SPN64"
 echo "proof: $(echo $LIST | wc -w) jobs, $JOBS at a time, $CBX_WP_PAR prover processes each"
 start=$(date +%s)
 # a failed job shows in the report (RESULT: NOT PROVED), not here

@@ -131,7 +131,7 @@ case_ psph-hi-unchecked src/f64/cbx_psph.c ps_try proofs/psph.c hi,lo ensures_hi
   "    int sound = up != 0 ? 1 : sl.lo >= 0.0;" - &
 # 18. a projected ball's tightness: the span allowed twice as wide (still
 #    sound; the 2^-20 postcondition must fail)
-case_ psph-span-doubled src/f64/cbx_psph.c ps_span proofs/psph.c w,q,span ensures_span \
+case_ psph-span-doubled src/f64/cbx_paff.h ps_span proofs/psph.c w,q,span ensures_span \
   "    return s <= q;" \
   "    return s <= cbx_add_up(q, q);" - &
 # 19. a projected ball: the camera-plane check skipped (unsound: W may
@@ -139,6 +139,22 @@ case_ psph-span-doubled src/f64/cbx_psph.c ps_span proofs/psph.c w,q,span ensure
 case_ psph-front-skipped src/f64/cbx_psph.c cbx_project_sphere proofs/psph.c '' 'requires_front' \
   "        if (!ps_in_front(w0, w1, w2, wt, c0, c1, c2, r)) {" \
   "        if (c0 != c0) {" - &
+# 20. a clipped box: the certificate without the near plane's share
+#    (X - s W <= (t - s) instead of (t - s) wn: unsound for wn < 1); the
+#    assertion that carries the multiplier's bound must fail
+case_ pnear-lam-no-wn src/f64/cbx_pnear.c pn_cert proofs/pnear.c lam,mb,pv,ml,lw0,lw,hi assert_ml \
+  "    m = iv_mul(iv_pt(lam), iv_pt(wn));" \
+  "    m = iv_mul(iv_pt(lam), iv_pt(1.0));" - &
+# 21. a clipped box: the witness taken in front of the near plane by its
+#    enclosure's upper end (the point may lie behind it: no tightness)
+case_ pnear-witness-hi src/f64/cbx_pnear.c pn_witness proofs/pnear.c ok ensures_ok \
+  "        if (w.lo >= wn) {" \
+  "        if (w.hi >= wn) {" - &
+# 22. a clipped box: "all behind the near plane" from the enclosure's
+#    lower end of W (a box partly in front reported empty)
+case_ pnear-behind-lo src/f64/cbx_pnear.c pn_behind proofs/pnear.c '' ensures_void \
+  "    return f < wn;" \
+  "    return f - 1.0 < wn;" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -41,6 +41,7 @@
 #include "certbox.h"
 #include "exact_util.h"
 #include "psph_oracle.h"
+#include "proj_cases.h"
 
 static double P[4][4], C[3], R;
 static const char *case_name;
@@ -90,62 +91,21 @@ static void run_case(const char *name, xu_rng *g)
 }
 
 /* ---- cases ------------------------------------------------------------------- */
-/* A perspective projection (OpenGL convention: W = -z_view) with focal
- * factor F = 1 / tan(fov / 2) (given, so that no libm function that is not
- * correctly rounded enters: the cases are the same bits on every machine,
- * make check-cross), aspect asp, planes n < f, times the view x -> Q x + T
- * (Q the rotation of the unit quaternion (w, x, y, z) rounded to doubles). */
 static void camera(double F, double asp, double n, double f, const double q[4], const double T[3])
 {
-    double Pm[4][4] = {{0}}, V[4][4] = {{0}};
-    double w = q[0], x = q[1], y = q[2], z = q[3];
-    int i, j, k;
-    Pm[0][0] = F / asp;
-    Pm[1][1] = F;
-    Pm[2][2] = (f + n) / (n - f);
-    Pm[2][3] = 2 * f * n / (n - f);
-    Pm[3][2] = -1;
-    V[0][0] = 1 - 2 * (y * y + z * z); V[0][1] = 2 * (x * y - w * z); V[0][2] = 2 * (x * z + w * y);
-    V[1][0] = 2 * (x * y + w * z); V[1][1] = 1 - 2 * (x * x + z * z); V[1][2] = 2 * (y * z - w * x);
-    V[2][0] = 2 * (x * z - w * y); V[2][1] = 2 * (y * z + w * x); V[2][2] = 1 - 2 * (x * x + y * y);
-    for (i = 0; i < 3; i++)
-        V[i][3] = T[i];
-    V[3][3] = 1;
-    for (i = 0; i < 4; i++)
-        for (j = 0; j < 4; j++) {
-            double s = 0;
-            for (k = 0; k < 4; k++)
-                s += Pm[i][k] * V[k][j];
-            P[i][j] = s;
-        }
+    tc_camera(P, F, asp, n, f, q, T);
 }
 
-/* m 2^e, e uniform in [lo, hi]: the generator's calls in a fixed order (the
- * order of a call's arguments is unspecified in C: it differs between
- * compilers and targets, and make check-cross compares the outputs) */
 static double scaled(xu_rng *g, double m, int lo, int hi)
 {
-    int e = xu_rng_int(g, lo, hi);
-    return ldexp(m, e);
+    return tc_scaled(g, m, lo, hi);
 }
 
 static void random_camera(xu_rng *g)
 {
-    double q[4], T[3], nq = 0, vc[3], fov, n, f;
+    double q[4], T[3], vc[3], n;
     int j;
-    for (j = 0; j < 4; j++) {
-        q[j] = 2 * xu_rng_unit(g) - 1;
-        nq += q[j] * q[j];
-    }
-    nq = sqrt(nq);
-    for (j = 0; j < 4; j++)
-        q[j] /= nq;
-    for (j = 0; j < 3; j++)
-        T[j] = scaled(g, 2 * xu_rng_unit(g) - 1, -2, 12);
-    fov = scaled(g, 1 + xu_rng_unit(g), -7, 6); /* F: fields of view 1 to 179 degrees */
-    n = ldexp(1.0, xu_rng_int(g, -8, 2));
-    f = n * ldexp(1.0, xu_rng_int(g, 2, 20));
-    camera(fov, 0.5 + 2 * xu_rng_unit(g), n, f, q, T);
+    tc_random_camera(g, P, q, T, &n);
     /* a center in view space: in front (mostly), beside, behind */
     vc[2] = -scaled(g, xu_rng_unit(g) + 0.01, -6, 16);
     if (xu_rng_int(g, 0, 9) == 0)
@@ -154,16 +114,7 @@ static void random_camera(xu_rng *g)
     vc[1] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
     R = fabs(vc[2]) * scaled(g, xu_rng_unit(g), -40, 1);
     /* back to world space: c = Q^T (vc - T), rounded (any double center will do) */
-    {
-        double w = q[0], x = q[1], y = q[2], z = q[3], d[3];
-        double Q[3][3] = {{1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
-                          {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
-                          {2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}};
-        for (j = 0; j < 3; j++)
-            d[j] = vc[j] - T[j];
-        for (j = 0; j < 3; j++)
-            C[j] = Q[0][j] * d[0] + Q[1][j] * d[1] + Q[2][j] * d[2];
-    }
+    tc_to_world(q, T, vc, C);
     if (xu_rng_int(g, 0, 7) == 0) { /* the whole map scaled by 2^k: W from 1e-60 to 1e60 */
         int i, k = xu_rng_int(g, -200, 200);
         for (i = 0; i < 4; i++)

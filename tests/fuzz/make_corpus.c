@@ -419,6 +419,23 @@ static void psphere(void)
     seed(H, "zero-w", 0x00, 20, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1);
 }
 
+static void pnear(void)
+{
+    const char *H = "pnear";
+    seed(H, "camera-box-front", 0x00, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -5.5, -4.5, 0.1);
+    seed(H, "camera-box-crossing", 0x00, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -1, 1, 0.1);
+    seed(H, "camera-box-behind", 0x00, 23, CAM90, -0.5, 0.5, -0.5, 0.5, 1, 2, 0.1);
+    seed(H, "camera-face-on-plane", 0x01, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -0.1, 2, 0.1);
+    seed(H, "camera-huge-box", 0x01, 23, CAM90, -1e6, 1e6, -1e6, 1e6, -1e6, 1e6, 0.01);
+    seed(H, "swapped-ends", 0x06, 23, CAM90, 0.5, -0.5, 0.5, -0.5, 1, -1, -0.1);
+    seed(H, "w-const", 0x00, 23, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, -1, 1, -1, 1, -1, 1, 2);
+    seed(H, "edges", 0x00, 23, 0x1p60, -0x1p60, 0x1p60, 0x1p120, 1, 1, 1, -0x1p120, 0, 0, 1, 0,
+         0, 0, -1, 0x1p120, -0x1p60, 0x1p60, -1, 1, -0x1p60, 0x1p60, 0x1p-100);
+    seed(H, "zero-wn", 0x00, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -1, 1, 0);
+    seed(H, "nan-wn", 0x00, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -1, 1, NaN);
+    seed(H, "inf-box", 0x00, 23, CAM90, -0.5, 0.5, -0.5, INF, -1, 1, 0.1);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -436,6 +453,7 @@ int main(int argc, char **argv)
     plane();
     project();
     psphere();
+    pnear();
     printf("make_corpus: %d seeds written under %s\n", nwritten, outdir);
     return 0;
 }

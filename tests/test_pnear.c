@@ -1,0 +1,378 @@
+/*
+ * test_pnear [N] [seed]: boxes under a projective map clipped at a near
+ * plane (cbx_project_box_near) against exact arithmetic (GMP rationals:
+ * the vertices of the clipped box, and X / W there, are rational).
+ *
+ * Checked, per call (tests/pnear_oracle.c):
+ *   1. statuses: NaN -> CBX_EINVAL; an empty box -> CBX_EMPTY; outside the
+ *      domain (wn <= 0 included) -> CBX_ERANGE; every status but CBX_OK ->
+ *      the whole space or, for CBX_EMPTY, the empty box; CBX_EMPTY for a
+ *      box in the domain only when W < wn at its 8 corners, exactly;
+ *   2. with CBX_OK: something in front of the near plane, every end finite,
+ *      on the right side of the exact end and within the proven 2^-20
+ *      (1 + |end|) of it (pn_tight); the distance to the exact end is
+ *      printed, in units of 2^-52 (1 + |end|);
+ *   3. with CBX_OK: lo W <= X <= hi W at each vertex of the clipped box and
+ *      at 6 random rational points of the box in front of the near plane;
+ * and, here:
+ *   4. out == in gives the same status and bits;
+ *   5. boxes wholly in front of the camera plane (cbx_project_box gives
+ *      CBX_OK) with the near plane far below them (wn = 2^-90);
+ *   6. CBX_ERANGE in the domain is rare: below 1% of the random cases
+ *      where W's magnitude on the box is at most 2^20 wn (a search that
+ *      fails would show here); above that it is expected (the witness of
+ *      tightness needs W to better than 2^-20 wn) and shown.
+ * Cases: a table of hard cases, then N random cameras (fields of view 1 to
+ * 179 degrees, random rigid views) with boxes in front of, across and
+ * behind the near plane, tiny to huge, and N random general maps.  The
+ * last line is "P passed, F failed".
+ */
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "certbox.h"
+#include "exact_util.h"
+#include "pnear_oracle.h"
+#include "proj_cases.h"
+
+static double P[4][4], WN;
+static cbx_box B;
+static const char *case_name;
+static pno_stats S;
+static long random_cases, random_erange, wide_cases, wide_erange;
+
+static cbx_status run_case(const char *name);
+
+/* W's magnitude over the box (|b0 x| + |b1 y| + |b2 z| + |b3| at the
+ * corners, the largest) at most 2^20 wn: the near plane not far below the
+ * rounding of W (above that, the witness of tightness needs W computed to
+ * better than 2^-20 wn, and CBX_ERANGE is expected; counted apart) */
+static int moderate(void)
+{
+    double s = 0;
+    int k, j;
+    for (k = 0; k < 8; k++) {
+        double t = fabs(P[3][3]);
+        for (j = 0; j < 3; j++)
+            t += fabs(P[3][j] * ((k >> j) & 1 ? B.hi[j] : B.lo[j]));
+        if (t > s)
+            s = t;
+    }
+    return s <= ldexp(WN, 20);
+}
+
+static void random_run(const char *name)
+{
+    long before = S.erange;
+    int m = moderate();
+    S.wide = !m;
+    run_case(name);
+    S.wide = 0;
+    if (m) {
+        random_cases++;
+        random_erange += S.erange - before;
+    } else {
+        wide_cases++;
+        wide_erange += S.erange - before;
+    }
+}
+
+static void on_fail(const char *what)
+{
+    int i;
+    if (S.failed > 20)
+        return;
+    printf("FAIL %s (%s)\n  map:", what, case_name);
+    for (i = 0; i < 4; i++)
+        printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
+    printf("\n  box: [%a %a] [%a %a] [%a %a]  wn: %a\n", B.lo[0], B.hi[0], B.lo[1], B.hi[1], B.lo[2], B.hi[2], WN);
+}
+
+static void check(int cond, const char *what)
+{
+    if (cond) {
+        S.passed++;
+    } else {
+        S.failed++;
+        on_fail(what);
+    }
+}
+
+static cbx_status run_case(const char *name)
+{
+    cbx_proj p;
+    cbx_box o, a;
+    cbx_status st, sa;
+    int i, j;
+    case_name = name;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            p.m[i][j] = P[i][j];
+    st = cbx_project_box_near(&p, &B, WN, &o);
+    a = B;
+    sa = cbx_project_box_near(&p, &a, WN, &a);
+    check(sa == st && memcmp(&a, &o, sizeof o) == 0, "out == in gives other bits");
+    if (getenv("PNEAR_DUMP") && st == CBX_ERANGE) {
+        printf("D %s", name);
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++)
+                printf(" %a", P[i][j]);
+        printf(" | %a %a %a %a %a %a | %a\n", B.lo[0], B.hi[0], B.lo[1], B.hi[1], B.lo[2], B.hi[2], WN);
+    }
+    pno_judge((const double (*)[4])P, &B, WN, st, &o, &S, on_fail);
+    return st;
+}
+
+/* A box wholly in front of the camera plane (cbx_project_box gives
+ * CBX_OK) with the near plane far below every corner (wn = 2^-90): the
+ * clipped bound is the unclipped one, judged against the same exact
+ * vertices (the corners). */
+static void in_front_case(const char *name)
+{
+    cbx_proj p;
+    cbx_box o;
+    int i, j;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            p.m[i][j] = P[i][j];
+    if (cbx_project_box(&p, &B, &o) != CBX_OK)
+        return;
+    WN = 0x1p-90;
+    run_case(name);
+}
+
+/* ---- cases ------------------------------------------------------------------- */
+static void random_camera(xu_rng *g)
+{
+    double q[4], T[3], vc[3], c[3], n, hs;
+    int e;
+    int j;
+    tc_random_camera(g, P, q, T, &n);
+    /* a center in view space: in front (mostly), near the plane, behind;
+     * half of the boxes around the near plane (so that it cuts them) */
+    if (xu_rng_int(g, 0, 1) == 0) {
+        vc[2] = -tc_scaled(g, xu_rng_unit(g) + 0.01, -8, 14);
+        if (xu_rng_int(g, 0, 9) == 0)
+            vc[2] = -vc[2];
+        hs = fabs(vc[2]) + n;
+        e = -30;
+    } else {
+        vc[2] = -n * 4 * xu_rng_unit(g);
+        hs = n * 8;
+        e = -4;
+    }
+    vc[0] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
+    vc[1] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
+    tc_to_world(q, T, vc, c);
+    for (j = 0; j < 3; j++) {
+        double h = hs * tc_scaled(g, xu_rng_unit(g), e, 1);
+        B.lo[j] = c[j] - h;
+        B.hi[j] = c[j] + h;
+    }
+    WN = n * ldexp(1.0, xu_rng_int(g, -3, 1));
+    if (xu_rng_int(g, 0, 7) == 0) { /* the whole map scaled by 2^k, and wn with it */
+        int i, k = xu_rng_int(g, -40, 40);
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++)
+                P[i][j] = ldexp(P[i][j], k);
+        WN = ldexp(WN, k);
+    }
+}
+
+static void random_general(xu_rng *g)
+{
+    double w;
+    int i, j;
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 4; j++)
+            P[i][j] = xu_gen_signed(g, -20, 20);
+    P[3][3] = fabs(P[3][3]) * 64; /* W mostly positive near the origin */
+    w = P[3][3];
+    for (j = 0; j < 3; j++) {
+        double c = tc_scaled(g, 2 * xu_rng_unit(g) - 1, -10, 4);
+        double h = tc_scaled(g, xu_rng_unit(g), -30, 3);
+        B.lo[j] = c - h;
+        B.hi[j] = c + h;
+        w += P[3][j] * c;
+    }
+    /* the near plane at W's value at the center times 2^-6 .. 2 (it cuts
+     * the box often), or anywhere when W is not positive there */
+    WN = w > 0x1p-90 ? w * tc_scaled(g, 1 + xu_rng_unit(g), -7, 0) : tc_scaled(g, 1 + xu_rng_unit(g), -30, 10);
+}
+
+static void identity_camera(void)
+{
+    static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
+    tc_camera(P, 2.0, 1.0, 0.125, 128, q0, t0);
+}
+
+static void set_box(double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    B.lo[0] = l0; B.hi[0] = h0;
+    B.lo[1] = l1; B.hi[1] = h1;
+    B.lo[2] = l2; B.hi[2] = h2;
+}
+
+/* the five random cameras of test_pnear 20000 1 with W's magnitude at most
+ * 2^20 wn that got CBX_ERANGE (the part in front a sliver) */
+static void sliver_cases(void)
+{
+    static const double c[][23] = {
+        {0x1.75f3c5867623dp+1, -0x1.30fee123f5ca2p+3, 0x1.f551ddd473114p+2, -0x1.4010b9c834832p+5,
+         -0x1.78b1691329002p+2, 0x1.df2edd4866044p+2, 0x1.69c66f3e3d027p+3, 0x1.6b1313ad8d1bdp+15,
+         0x1.c6b6dc83e9be4p-1, 0x1.b07bb5c3be38ep-2, 0x1.76173f419c725p-3, 0x1.70cbee5890bc2p+9,
+         0x1.c69a71f975d34p-1, 0x1.b060aee099162p-2, 0x1.75ffde88ae2p-3, 0x1.70b5e24a0ba74p+9,
+         0x1.2ae32d2ee2ecp+9, 0x1.2ae34030b4bccp+9, -0x1.dc897e79775abp+10, -0x1.dc869730f0b71p+10,
+         -0x1.3d242b5dc850ep+11, -0x1.3d23d4d9d78bep+11, 0x1p-7},
+        {0x1.351fcb7d5e939p+2, -0x1.683d943db42dfp+1, -0x1.3344453cc3e5p+1, 0x1.1878d473cd9afp+10,
+         0x1.ee5cd1efdaa43p+1, 0x1.00d487f13a002p+2, 0x1.887c2a879013ap+1, 0x1.9f83bad199f65p-4,
+         -0x1.a91eafd8fd497p-6, 0x1.3ecd601e52aa8p-1, -0x1.907ed8eab858ap-1, -0x1.83d750d686c94p+7,
+         -0x1.a9116718a183p-6, 0x1.3ec369db2ac49p-1, -0x1.907255260015cp-1, -0x1.83c7325c79fd4p+7,
+         -0x1.2ee46fc0c293ep+7, -0x1.2ee0589b7dab6p+7, 0x1.9c047ad475c6fp+7, 0x1.9c056e84ace13p+7,
+         -0x1.3b9381f51acfep+6, -0x1.3b8d0da4588ccp+6, 0x1p-8}};
+    int k, i, j;
+    for (k = 0; k < (int)(sizeof c / sizeof c[0]); k++) {
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++)
+                P[i][j] = c[k][4 * i + j];
+        set_box(c[k][16], c[k][17], c[k][18], c[k][19], c[k][20], c[k][21]);
+        WN = c[k][22];
+        run_case("a sliver in front of the near plane");
+    }
+}
+
+static void hard_cases(void)
+{
+    static const double bad_wn[] = {0.0, -0.0, -1.0, 0x1p-101, 0x1p121, INFINITY, -INFINITY};
+    int k;
+    /* a box straight ahead, in front; across the near plane; behind */
+    identity_camera();
+    set_box(-1, 1, -1, 1, -12, -8); WN = 0.125;
+    run_case("box ahead");
+    set_box(-1, 1, -1, 1, -4, 4);
+    run_case("box across the near plane (the camera inside)");
+    set_box(-1, 1, -1, 1, 1, 4);
+    check(run_case("box behind the camera") == CBX_EMPTY, "a box behind the camera without CBX_EMPTY");
+    set_box(-1, 1, -1, 1, -0.125, 4);
+    run_case("box with a face on the near plane");
+    set_box(-1, 1, -1, 1, -0.0625, 4);
+    run_case("box just behind the near plane");
+    set_box(1, 1, 1, 1, -0.125, -0.125);
+    run_case("a point on the near plane");
+    set_box(-1e6, 1e6, -1e6, 1e6, -1e6, 1e6);
+    run_case("huge box around the camera");
+    set_box(1e3, 1e3 + 1e-9, 1e3, 1e3 + 1e-9, -1e4, -1e4 + 1e-9);
+    run_case("tiny box far away");
+    /* NaN in each input, an empty box, bad near planes */
+    for (k = 0; k < 23; k++) {
+        identity_camera();
+        set_box(-1, 1, -1, 1, -4, 4); WN = 0.125;
+        if (k < 16)
+            P[k / 4][k % 4] = NAN;
+        else if (k < 22)
+            ((k - 16) % 2 ? B.hi : B.lo)[(k - 16) / 2] = NAN;
+        else
+            WN = NAN;
+        check(run_case("NaN") == CBX_EINVAL, "NaN without CBX_EINVAL");
+    }
+    identity_camera();
+    set_box(-1, 1, 1, -1, -4, 4); WN = 0.125;
+    check(run_case("empty box") == CBX_EMPTY, "empty box without CBX_EMPTY");
+    set_box(-1, 1, -1, 1, -4, INFINITY);
+    run_case("an infinite end");
+    for (k = 0; k < (int)(sizeof bad_wn / sizeof bad_wn[0]); k++) {
+        set_box(-1, 1, -1, 1, -12, -8); WN = bad_wn[k];   /* a box that gets CBX_OK with wn = 0.125 */
+        check(run_case("near plane outside the domain") == CBX_ERANGE, "wn outside the domain without CBX_ERANGE");
+    }
+    WN = 0.125;
+    for (k = 0; k < 10; k++) {   /* each row, then each box end, outside the domain */
+        identity_camera();
+        set_box(-1, 1, -1, 1, -12, -8);
+        if (k < 4)
+            P[k][k == 3 ? 2 : k] = k == 3 ? -0x1p61 : 0x1p61;
+        else
+            (k % 2 ? B.hi : B.lo)[(k - 4) / 2] = k % 2 ? 0x1p61 : -0x1p61;
+        check(run_case("an entry or a box end above 2^60") == CBX_ERANGE, "outside the domain without CBX_ERANGE");
+    }
+    /* a ratio a_j / b_j beyond 2^100 (W's x coefficient 2^-60, X's 2^50) */
+    identity_camera();
+    P[3][0] = 0x1p-60;
+    P[0][0] = 0x1p50;
+    set_box(-1, 1, -1, 1, -4, 4);
+    run_case("a ratio beyond the range of an end");
+    /* a vertex's value beyond 2^99: X up to 2^60, W down to 2^-100 */
+    memset(P, 0, sizeof P);
+    P[0][0] = 0x1p60; P[1][1] = 1; P[2][2] = 1; P[3][2] = 1;
+    set_box(1, 2, 0, 1, 0x1p-100, 1); WN = 0x1p-100;
+    check(run_case("an end beyond 2^99 (a corner)") == CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
+    set_box(1, 2, 0, 1, 0, 1);
+    check(run_case("an end beyond 2^99 (a crossing)") == CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
+    /* boxes whose part in front of the near plane is a sliver, W's
+     * magnitude 2^16 to 2^20 times wn (random cases that got CBX_ERANGE) */
+    sliver_cases();
+    /* rank-deficient maps: W constant (in front, on the plane, behind); X zero */
+    for (k = 0; k < 3; k++) {
+        memset(P, 0, sizeof P);
+        P[0][0] = 1; P[1][1] = 1; P[2][2] = 1;
+        P[3][3] = k == 0 ? 2 : k == 1 ? 0.125 : 0.0625;
+        set_box(-1, 1, -1, 1, -4, 4);
+        run_case("W constant");
+    }
+    identity_camera();
+    P[0][0] = P[0][1] = P[0][2] = P[0][3] = 0;
+    set_box(-1, 1, -1, 1, -4, 4);
+    run_case("X_0 zero");
+    /* a corner exactly on the near plane (integer map: W exact) */
+    memset(P, 0, sizeof P);
+    P[0][0] = 1; P[1][1] = 1; P[2][2] = 1; P[3][0] = 1; P[3][1] = 1; P[3][2] = 1;
+    set_box(0, 1, 0, 1, 0, 1); WN = 1;
+    run_case("corner on the near plane");
+    WN = 3;
+    run_case("only the far corner on the near plane");
+    WN = 2;
+    run_case("a diagonal plane through four corners");
+    /* wide and narrow fields of view; W from 2^-90 to 2^100 */
+    for (k = 0; k < 8; k++) {
+        static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
+        int i, j;
+        tc_camera(P, k < 4 ? ldexp(1.0, -6 - k) : ldexp(1.0, 4 + k), 1.5, 0.01, 1e4, q0, t0);
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++)
+                P[i][j] = ldexp(P[i][j], 12 * k - 40);
+        set_box(-3, 5, -2, 7, -9, 0.5); WN = ldexp(0.01, 12 * k - 40);
+        run_case("scaled wide or narrow camera");
+    }
+}
+
+int main(int argc, char **argv)
+{
+    long n = argc > 1 ? atol(argv[1]) : 20000, k;
+    uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
+    xu_rng g;
+    g.s = seed;
+    pno_init(&S, seed + 99);
+    hard_cases();
+    for (k = 0; k < n; k++) {
+        random_camera(&g);
+        random_run("random camera");
+        random_general(&g);
+        random_run("random general map");
+        if (k % 8 == 0) {
+            random_camera(&g);
+            in_front_case("box in front, near plane at 2^-90");
+        }
+    }
+    case_name = "the random cases";
+    check(random_erange * 100 <= random_cases, "CBX_ERANGE in the domain for 1% or more of the random cases");
+    printf("test_pnear: %ld random cameras and %ld random general maps (seed %llu), and the hard cases\n",
+           n, n, (unsigned long long)seed);
+    pno_print(stdout, &S);
+    printf("  CBX_ERANGE among the random cases with W's magnitude at most 2^20 wn: %ld of %ld (asserted below 1%%);\n"
+           "  among those with a larger W (shown): %ld of %ld\n", random_erange, random_cases, wide_erange, wide_cases);
+    printf("%ld passed, %ld failed\n", S.passed, S.failed);
+    pno_free(&S);
+    return S.failed != 0;
+}
