@@ -1465,3 +1465,42 @@ void xu_slerp_at(xu_slerp *e, mpfr_srcptr s, mpfr_t q[4])
     mpfr_sqrt(e->n, e->n, MPFR_RNDN);
     for (int i = 0; i < 4; i++) mpfr_div(q[i], q[i], e->n, MPFR_RNDN);
 }
+
+/* ---- shared by the projective oracles -------------------------------------- */
+int xu_whole_box(const cbx_box *o)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(isinf(o->lo[i]) && o->lo[i] < 0 && isinf(o->hi[i]) && o->hi[i] > 0))
+            return 0;
+    return 1;
+}
+
+int xu_empty_box(const cbx_box *o)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(isinf(o->lo[i]) && o->lo[i] > 0 && isinf(o->hi[i]) && o->hi[i] < 0))
+            return 0;
+    return 1;
+}
+
+void xu_aff_q(mpq_t q, const double m[4], mpq_t const x[3])
+{
+    mpq_t t;
+    int j;
+    mpq_init(t);
+    mpq_set_d(q, m[3]);
+    for (j = 0; j < 3; j++) {
+        mpq_set_d(t, m[j]);
+        mpq_mul(t, t, x[j]);
+        mpq_add(q, q, t);
+    }
+    mpq_clear(t);
+}
+
+int xu_cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}

@@ -15,15 +15,10 @@
 
 #include <gmp.h>
 
+#include "exact_util.h"
 #include "pnear_oracle.h"
 
 #define NV 20   /* at most 8 corners and 12 crossings */
-
-static int cmp_d(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static uint64_t next(uint64_t *s)
 {
@@ -31,24 +26,6 @@ static uint64_t next(uint64_t *s)
     *s ^= *s >> 7;
     *s ^= *s << 17;
     return *s;
-}
-
-static int whole(const cbx_box *o)
-{
-    int j;
-    for (j = 0; j < 3; j++)
-        if (!(isinf(o->lo[j]) && o->lo[j] < 0 && isinf(o->hi[j]) && o->hi[j] > 0))
-            return 0;
-    return 1;
-}
-
-static int empty_out(const cbx_box *o)
-{
-    int j;
-    for (j = 0; j < 3; j++)
-        if (!(isinf(o->lo[j]) && o->lo[j] > 0 && isinf(o->hi[j]) && o->hi[j] < 0))
-            return 0;
-    return 1;
 }
 
 static int in_range(double x, double b)
@@ -73,28 +50,13 @@ static int in_domain(const double p[4][4], const cbx_box *in, double wn)
     return wn >= 0x1p-100 && wn <= 0x1p120;
 }
 
-/* r = m0 x0 + m1 x1 + m2 x2 + m3, exactly */
-static void row_at(mpq_t r, const double m[4], mpq_t x[3])
-{
-    mpq_t t;
-    int j;
-    mpq_init(t);
-    mpq_set_d(r, m[3]);
-    for (j = 0; j < 3; j++) {
-        mpq_set_d(t, m[j]);
-        mpq_mul(t, t, x[j]);
-        mpq_add(r, r, t);
-    }
-    mpq_clear(t);
-}
-
 /* X_i / W at the point x (W > 0) */
 static void value_at(mpq_t v, const double p[4][4], int i, mpq_t x[3])
 {
     mpq_t w;
     mpq_init(w);
-    row_at(v, p[i], x);
-    row_at(w, p[3], x);
+    xu_aff_q(v, p[i], (mpq_t const *)x);
+    xu_aff_q(w, p[3], (mpq_t const *)x);
     mpq_div(v, v, w);
     mpq_clear(w);
 }
@@ -127,7 +89,7 @@ static int vertices(const double p[4][4], const cbx_box *in, double wn, mpq_t vx
             mpq_init(c[k][j]);
             mpq_set_d(c[k][j], (k >> j) & 1 ? in->hi[j] : in->lo[j]);
         }
-        row_at(w[k], p[3], c[k]);
+        xu_aff_q(w[k], p[3], (mpq_t const *)c[k]);
     }
     mpq_set_d(q, wn);
     for (k = 0; k < 8; k++)
@@ -228,7 +190,7 @@ static int random_point(pno_stats *s, const double p[4][4], const cbx_box *in, d
             v = in->hi[j];
         mpq_set_d(x[j], v);
     }
-    row_at(w, p[3], x);
+    xu_aff_q(w, p[3], (mpq_t const *)x);
     mpq_set_d(q, wn);
     ok = mpq_cmp(w, q) >= 0;
     mpq_clears(w, q, NULL);
@@ -267,7 +229,7 @@ static void judge_ok(const double p[4][4], const cbx_box *in, double wn, const c
     for (k = 0; k < 8; k++) {
         for (j = 0; j < 3; j++)
             mpq_set_d(x[j], (k >> j) & 1 ? in->hi[j] : in->lo[j]);
-        row_at(v, p[3], x);
+        xu_aff_q(v, p[3], (mpq_t const *)x);
         mpq_set_d(best_lo, wn);
         if (mpq_cmp(v, best_lo) < 0)
             ok = 1;
@@ -296,16 +258,16 @@ void pno_judge(const double p[4][4], const cbx_box *in, double wn, cbx_status st
     else if (st == CBX_EINVAL)
         s->st[3]++;
     if (nan) {
-        CHECK(st == CBX_EINVAL && whole(out), "NaN without CBX_EINVAL and the whole space");
+        CHECK(st == CBX_EINVAL && xu_whole_box(out), "NaN without CBX_EINVAL and the whole space");
         return;
     }
     CHECK(st != CBX_EINVAL, "CBX_EINVAL without NaN");
     if (empty) {
-        CHECK(st == CBX_EMPTY && empty_out(out), "an empty box without CBX_EMPTY and the empty box");
+        CHECK(st == CBX_EMPTY && xu_empty_box(out), "an empty box without CBX_EMPTY and the empty box");
         return;
     }
     if (!in_domain(p, in, wn)) {
-        CHECK(st == CBX_ERANGE && whole(out), "outside the domain without CBX_ERANGE and the whole space");
+        CHECK(st == CBX_ERANGE && xu_whole_box(out), "outside the domain without CBX_ERANGE and the whole space");
         return;
     }
     CHECK(st == CBX_OK || st == CBX_EMPTY || st == CBX_ERANGE, "an undocumented status");
@@ -317,10 +279,10 @@ void pno_judge(const double p[4][4], const cbx_box *in, double wn, cbx_status st
                 mpq_init(vx[k][j]);
         n = vertices(p, in, wn, vx);
         if (st == CBX_EMPTY) {
-            CHECK(n == 0 && empty_out(out), "CBX_EMPTY with a point of the box in front of the near plane, or not the empty box");
+            CHECK(n == 0 && xu_empty_box(out), "CBX_EMPTY with a point of the box in front of the near plane, or not the empty box");
             s->behind++;
         } else if (st == CBX_ERANGE) {
-            CHECK(whole(out), "CBX_ERANGE without the whole space");
+            CHECK(xu_whole_box(out), "CBX_ERANGE without the whole space");
             s->erange++;
             s->erange_void += n == 0;
         } else if (st == CBX_OK) {
@@ -347,7 +309,7 @@ void pno_print(FILE *f, pno_stats *s)
     fprintf(f, "  with CBX_OK: every end against the exact end (GMP rationals over the clipped box's vertices), and %ld exact points\n", s->points);
     fprintf(f, "  CBX_ERANGE in the domain: %ld (%ld of them with nothing in front of the near plane)\n", s->erange, s->erange_void);
     if (s->n_dist > 0) {
-        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, cmp_d);
+        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, xu_cmp_double);
         fprintf(f, "  distance of an end to the exact end, in units of 2^-52 (1 + |end|) (proven: at most 2^32):\n"
                    "    median %.1f, 99th percentile %.1f, 99.9th %.1f, largest %.3g (%ld ends)\n",
                 s->dist[s->n_dist / 2], s->dist[s->n_dist * 99 / 100], s->dist[s->n_dist * 999 / 1000], s->worst, s->n_dist);

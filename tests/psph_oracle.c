@@ -47,37 +47,7 @@ static void add_dist(double u)
         S->worst = u;
 }
 
-static int cmp_d(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return a < b ? -1 : a > b;
-}
-
-static int whole(const cbx_box *o)
-{
-    int i;
-    for (i = 0; i < 3; i++)
-        if (!(isinf(o->lo[i]) && o->lo[i] < 0 && isinf(o->hi[i]) && o->hi[i] > 0))
-            return 0;
-    return 1;
-}
-
 /* ---- exact pieces ---------------------------------------------------------- */
-/* q = sum_j m[j] x[j] + m[3] (x rational) */
-static void aff_q(mpq_t q, const double m[4], mpq_t const x[3])
-{
-    mpq_t t;
-    int j;
-    mpq_init(t);
-    mpq_set_d(q, m[3]);
-    for (j = 0; j < 3; j++) {
-        mpq_set_d(t, m[j]);
-        mpq_mul(t, t, x[j]);
-        mpq_add(q, q, t);
-    }
-    mpq_clear(t);
-}
-
 /* u . v of the linear parts (j < 3) */
 static void dot_q(mpq_t q, const double u[4], const double v[4])
 {
@@ -178,7 +148,7 @@ static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
         mpq_init(cq[j]);
         mpq_set_d(cq[j], C[j]);
     }
-    aff_q(B, P[3], (mpq_t const *)cq);
+    xu_aff_q(B, P[3], (mpq_t const *)cq);
     dot_q(bb, P[3], P[3]);
     mpq_set_d(r2, R);
     mpq_mul(r2, r2, r2);
@@ -200,7 +170,7 @@ static void exact_ends(int i, mpfr_t l0, mpfr_t l1, mpfr_t h0, mpfr_t h1)
     mpq_inits(A, B, aa, bb, ab, r2, al, be, ga, de, t, NULL);
     mpfr_inits2(PREC, sd, su, (mpfr_ptr)0);
     ball_w(B, bb, r2);
-    aff_q(A, P[i], (mpq_t const *)cq);
+    xu_aff_q(A, P[i], (mpq_t const *)cq);
     dot_q(aa, P[i], P[i]);
     dot_q(ab, P[i], P[3]);
     mpq_mul(al, B, B);
@@ -294,10 +264,10 @@ static void point_check(const cbx_box *o, double u, double v, double s)
         mpq_set_d(t, C[j]);
         mpq_add(x[j], t, q);
     }
-    aff_q(W, P[3], (mpq_t const *)x);
+    xu_aff_q(W, P[3], (mpq_t const *)x);
     check(mpq_sgn(W) > 0, "W > 0 at a point of the ball");
     for (i = 0; i < 3; i++) {
-        aff_q(X, P[i], (mpq_t const *)x);
+        xu_aff_q(X, P[i], (mpq_t const *)x);
         mpq_set_d(t, o->lo[i]);
         mpq_mul(t, t, W);
         check(mpq_cmp(t, X) <= 0, "lo W <= X at a point of the ball");
@@ -368,7 +338,7 @@ void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st,
     check(st == CBX_OK || st == CBX_EINVAL || st == CBX_ERANGE || st == CBX_EBEHIND, "a known status");
     s->st[st == CBX_OK ? 0 : st == CBX_EBEHIND ? 1 : st == CBX_ERANGE ? 2 : 3]++;
     if (st != CBX_OK)
-        check(whole(&o), "the whole space with a status other than CBX_OK");
+        check(xu_whole_box(&o), "the whole space with a status other than CBX_OK");
     if (any_nan()) {
         check(st == CBX_EINVAL, "NaN -> CBX_EINVAL");
         return;
@@ -462,7 +432,7 @@ void pso_print(FILE *f, pso_stats *s)
     fprintf(f, "  with CBX_OK: every end against its exact value (MPFR, %d bits), and %ld exact points of the balls\n", PREC, s->points);
     fprintf(f, "  CBX_ERANGE in the domain: %ld, the farthest from the camera plane at (min W) / (max W) = %.3g on the ball\n", s->erange, s->erange_front);
     if (s->n_dist > 0) {
-        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, cmp_d);
+        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, xu_cmp_double);
         fprintf(f, "  distance of an end to the exact end, in units of 2^-52 (1 + |end|) (proven: at most 2^32):\n"
                    "    median %.1f, 99th percentile %.1f, 99.9th %.1f, largest %.3g (%ld ends)\n",
                 s->dist[s->n_dist / 2], s->dist[s->n_dist * 99 / 100], s->dist[s->n_dist * 999 / 1000], s->worst, s->n_dist);
