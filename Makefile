@@ -99,7 +99,7 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 	    -e 's#@VERSION@#$(VERSION)#' $< > $@
 
 # ---- tests ---------------------------------------------------------------
-TESTUTIL := tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/proj_cases.c
+TESTUTIL := tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(PUBCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # The scene tool (issue 6): tools/certbox/, built with the library's flags.  An
@@ -155,7 +155,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project trs psphere pnear
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project trs psphere pnear pball
 # Each suite with its arguments: one target per run (run-NAME, san-NAME), so
 # that make -j2 (make check) spreads the runs over both cores; -Otarget
 # keeps each run's output together.  One line per suite: its name, its
@@ -185,6 +185,7 @@ $(eval $(call suite,project,20000 1,4000 2))
 $(eval $(call suite,trs,100000 1,10000 2))
 $(eval $(call suite,psphere,20000 1,4000 2))
 $(eval $(call suite,pnear,20000 1,3000 2))
+$(eval $(call suite,pball,20000 1,3000 2))
 $(eval $(call suite,ieee,,))
 $(eval $(call suite,scene,examples/*.scene,examples/*.scene))
 $(eval $(call suite,gltf,$(GLTFDIR) tests/data/gltf $(B)/certbox,$(GLTFDIR) tests/data/gltf $(B)/certbox))

@@ -261,6 +261,7 @@ typedef struct bench_ctx {
     double *psc, *psr;        /* balls: the boxes' centres and half-sizes  */
     cbx_box *pcx;             /* boxes across the near plane               */
     double *pwn;              /* the near plane (the camera's near distance) */
+    double *pxc, *pxr;        /* balls across the near plane: centres, radii */
     /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
      * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
     cbx_trs *rk0, *rk1;
@@ -458,6 +459,9 @@ CBX_KERNEL(k_psph, cbx_box, cbx_project_sphere(&b->pm[i], b->psc + 3 * i, b->psr
 REF_KERNEL(k_pnear_ref, cbx_box, ref_pnear(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
 CBX_KERNEL(k_pnear_front, cbx_box, cbx_project_box_near(&b->pm[i], &b->pin[i], b->pwn[i], &o[i]))
 CBX_KERNEL(k_pnear, cbx_box, cbx_project_box_near(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
+CBX_KERNEL(k_pball_front, cbx_box, cbx_project_sphere_near(&b->pm[i], b->psc + 3 * i, b->psr[i], b->pwn[i], &o[i]))
+REF_KERNEL(k_pball_ref, cbx_box, ref_pnear(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
+CBX_KERNEL(k_pball, cbx_box, cbx_project_sphere_near(&b->pm[i], b->pxc + 3 * i, b->pxr[i], b->pwn[i], &o[i]))
 static const double t_end[2] = { 0.0, 1.0 };
 static double t_128[128];
 REF_KERNEL(k_rot_end, cbx_box, ref_trs_samples(&b->rk0[i], &b->rk1[i], 0, t_end, 2, &b->rin[i], &o[i]))
@@ -1168,6 +1172,12 @@ static void define_rows(bench_ctx *b, const sizes *z)
                     k_pnear_ref, n, P, 0, bsz, MK_NONE));
     add_row(G_P, 0, "PN-X", "box across the near plane: certbox `cbx_project_box_near`", k_pnear,
             n, P, 0, bsz, MK_NONE);
+    add_row(G_P, 0, "PB", "ball in front, clipped at the near plane: certbox `cbx_project_sphere_near`",
+            k_pball_front, n, P, 0, bsz, MK_NONE);
+    unsound(add_row(G_P, 0, "PB-XR", "ball across the near plane: its cube's clipped vertices divided by w, RN (looser)",
+                    k_pball_ref, n, P, 0, bsz, MK_NONE));
+    add_row(G_P, 0, "PB-X", "ball across the near plane: certbox `cbx_project_sphere_near`", k_pball,
+            n, P, 0, bsz, MK_NONE);
 
     /* motion with rotation (keyframes 0 to 90 degrees apart), against the
      * union of the endpoint boxes (pbrt-style) */
@@ -1571,6 +1581,8 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     b->psr = xmalloc(n * sizeof *b->psr);
     b->pcx = xmalloc(n * sizeof *b->pcx);
     b->pwn = xmalloc(n * sizeof *b->pwn);
+    b->pxc = xmalloc(3 * n * sizeof *b->pxc);
+    b->pxr = xmalloc(n * sizeof *b->pxr);
     rng.s = seed + 7;
     for (k = 0; k < n; k++) {
         double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
@@ -1619,7 +1631,9 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
             for (j = 0; j < 3; j++) c += R[j][i] * (vc[j] - T[j]);
             b->pcx[k].lo[i] = c - h;
             b->pcx[k].hi[i] = c + h;
+            b->pxc[3 * k + i] = c;    /* the ball inscribed in that cube */
         }
+        b->pxr[k] = h;
     }
     gen_rot(b, n, seed);
 }

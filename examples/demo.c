@@ -22,6 +22,7 @@
 #include "exact_util.h"
 #include "psph_oracle.h"
 #include "pnear_oracle.h"
+#include "pball_oracle.h"
 
 #define N_SAMPLES 9
 
@@ -427,6 +428,31 @@ static void show_project_near(const cbx_proj *p, const cbx_box *cube)
     pno_free(&s);
 }
 
+/* A ball around the camera's near plane (cbx_project_sphere_near): the
+ * bound of its visible part, judged by the exact oracle
+ * (tests/pball_oracle.c: every end against its closed form in MPFR, exact
+ * points of the ball in front of the plane). */
+static void show_project_ball_near(const cbx_proj *p)
+{
+    const double c[3] = {0.3, -0.2, -0.5};
+    double rad = 1.0;
+    cbx_box out, whole;
+    pbo_stats s;
+    cbx_status st = cbx_project_sphere_near(p, c, rad, 0.1, &out);
+    cbx_status st2 = cbx_project_sphere(p, c, rad, &whole);
+    int i, before = near_failures;
+    printf("  the ball |x - (%g, %g, %g)| <= %g (it crosses the camera plane): cbx_project_sphere: %s;\n"
+           "  clipped at the near plane w = 0.1: cbx_project_sphere_near: status %s\n",
+           c[0], c[1], c[2], rad, cbx_status_name(st2), cbx_status_name(st));
+    for (i = 0; i < 3; i++)
+        printf("  ndc%d in [%22.17g, %22.17g]\n", i, out.lo[i], out.hi[i]);
+    pbo_init(&s, 1);
+    pbo_judge((const double (*)[4])p->m, c, rad, 0.1, st, &out, &s, near_fail);
+    printf("  contains the exact bound of the visible part, each end within 2^-20 of it: %s (%ld exact checks)\n",
+           near_failures == before && st == CBX_OK ? "yes" : "NO", s.passed);
+    pbo_free(&s);
+}
+
 /* A box under a camera's projection (cbx_project_box), in NDC, with the
  * round-to-nearest 8-corner divide beside it; the exact bounds in mpq. */
 static void show_project(int n)
@@ -482,6 +508,7 @@ static void show_project(int n)
     mpq_clears(X, W, r, lo, hi, t, NULL);
     show_project_near(&p, &behind);
     show_project_sphere(&p);
+    show_project_ball_near(&p);
 }
 
 /* A box swept by a keyframed rotation: [4, 6] x [-1, 1] x [-1, 1] turned

@@ -7,7 +7,7 @@
                                         the functions of TU that call NAME
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
-proj_f.c, trs.c, psph.c, pnear.c).  It is
+proj_f.c, trs.c, psph.c, pnear.c, pball.c).  It is
 preprocessed as Frama-C preprocesses it (gcc -E -C -D__FRAMAC__, the
 library's include folders of scripts/incs.sh and specs/); each function
 definition is then attributed to the file the line markers name, under the
@@ -28,11 +28,17 @@ follow the layers of src/:
              matrices of src/f64/cbx_cell.h
     psph     a ball under a projective map (proofs/psph.c): the functions
              of src/f64/cbx_psph.c and of the enclosures they share,
-             src/f64/cbx_paff.h (the interval arithmetic they call is
-             proven in trs)
+             src/f64/cbx_paff.h and cbx_pgap.h (the interval arithmetic
+             they call is proven in trs), minus psphrace
+    psphrace the same files' functions marked /* proof: race */ (a goal
+             that Z3 proves at once and CVC4 not in pass 1's time: their
+             job races both provers from the first pass)
     pnear    a box under a projective map clipped at a near plane
              (proofs/pnear.c): the functions of src/f64/cbx_pnear.c (the
              enclosures of cbx_paff.h they call are proven in psph)
+    pball    a ball under a projective map clipped at a near plane
+             (proofs/pball.c): the functions of src/f64/cbx_pball.c (the
+             enclosures of cbx_paff.h and cbx_pgap.h: psph)
     proj     the projective unit (proofs/proj.c, proj_f.c): functions of
              src/algo/cbx_project.c and src/core/cbx_quot.h, minus split
     projsplit  the same unit's functions marked for -wp-split
@@ -64,8 +70,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The units where only one group is proven (the rest of their code is
 # tested only), so a call from the rest establishes no precondition:
 # proofs/trs.c, where src/f64/cbx_trs.c's path and loop are not proven.
-PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph', 'pnear.c': 'pnear'}
+PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph,psphrace', 'pnear.c': 'pnear', 'pball.c': 'pball'}
 MARK = '/* proof: -wp-split */'
+RACE = '/* proof: race */'
 DEF = re.compile(r'^(?!typedef\b|extern\b)[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\s*\(')
 
 
@@ -77,16 +84,17 @@ def preprocess(tu):
 
 
 def definitions(text):
-    """[(file, name, split)] of every function defined in the unit"""
+    """[(file, name, mark)] of every function defined in the unit; mark:
+    'split' (MARK before its contract), 'race' (RACE) or None"""
     lines = text.split('\n')
-    cur, split, seen, out = None, False, set(), []
+    cur, split, seen, out = None, None, set(), []
     for k, ln in enumerate(lines):
         m = re.match(r'# \d+ "([^"]+)"', ln)
         if m:
             cur = os.path.normpath(m.group(1))
             continue
-        if ln.strip() == MARK:
-            split = True
+        if ln.strip() in (MARK, RACE):
+            split = 'split' if ln.strip() == MARK else 'race'
             continue
         m = DEF.match(ln)
         if not m or ln.rstrip().endswith(';'):
@@ -100,7 +108,7 @@ def definitions(text):
         if name not in seen:
             seen.add(name)
             out.append((cur, name, split))
-        split = False
+        split = None
     return out
 
 
@@ -151,30 +159,35 @@ def group(defs, g):
     proj = ('src/algo/cbx_project.c', 'src/core/cbx_quot.h')
     ball = ('src/algo/cbx_sphere.c',)
     trs = ('src/f64/cbx_iv.h', 'src/f64/cbx_quat.h', 'src/f64/cbx_cell.h')
-    psph = ('src/f64/cbx_psph.c', 'src/f64/cbx_paff.h')
+    psph = ('src/f64/cbx_psph.c', 'src/f64/cbx_paff.h', 'src/f64/cbx_pgap.h')
     pnear = ('src/f64/cbx_pnear.c',)
+    pball = ('src/f64/cbx_pball.c',)
     if g == 'split':
-        return [n for f, n, s in defs if s and f not in ball]
+        return [n for f, n, s in defs if s == 'split' and f not in ball]
     if g == 'kernels':
-        return [n for f, n, s in defs if not s and (under(f, 'src/core/', '.h') or under(f, 'src/algo/', '.h'))]
+        return [n for f, n, s in defs if s != 'split' and (under(f, 'src/core/', '.h') or under(f, 'src/algo/', '.h'))]
     if g == 'f64':
-        return [n for f, n, s in defs if not s and under(f, 'src/f64/', '.c') and f not in imat + psph + pnear]
+        return [n for f, n, s in defs if s != 'split' and under(f, 'src/f64/', '.c') and f not in imat + psph + pnear + pball]
     if g == 'imat':
         return [n for f, n, s in defs if f in imat]
     if g == 'trs':
         return [n for f, n, s in defs if f in trs]
     if g == 'psph':
-        return [n for f, n, s in defs if f in psph]
+        return [n for f, n, s in defs if f in psph and s != 'race']
+    if g == 'psphrace':
+        return [n for f, n, s in defs if f in psph and s == 'race']
     if g == 'pnear':
         return [n for f, n, s in defs if f in pnear]
+    if g == 'pball':
+        return [n for f, n, s in defs if f in pball]
     if g == 'proj':
-        return [n for f, n, s in defs if not s and f in proj]
+        return [n for f, n, s in defs if s != 'split' and f in proj]
     if g == 'projsplit':
-        return [n for f, n, s in defs if s and f in proj]
+        return [n for f, n, s in defs if s == 'split' and f in proj]
     if g == 'ball':
-        return [n for f, n, s in defs if not s and f in ball]
+        return [n for f, n, s in defs if s != 'split' and f in ball]
     if g == 'ballsplit':
-        return [n for f, n, s in defs if s and f in ball]
+        return [n for f, n, s in defs if s == 'split' and f in ball]
     if g == 'all':
         return [n for f, n, s in defs]
     sys.exit('fcts.py: unknown group %s' % g)
@@ -194,7 +207,7 @@ def main():
         sys.exit('fcts.py: group %s of %s is empty' % (sys.argv[2], sys.argv[1]))
     if sys.argv[3:]:
         part = PARTIAL.get(os.path.basename(sys.argv[1]))
-        tc = smoke_full(text, group(defs, part) if part else None)
+        tc = smoke_full(text, [n for g in part.split(',') for n in group(defs, g)] if part else None)
         missing = set(names) - set(callees(text))
         if missing:
             sys.exit('fcts.py: no body found for %s' % ','.join(sorted(missing)))

@@ -3,6 +3,8 @@
 # and one selection of goals.  Usage: sh proofs/job.sh NAME (run from the
 # checkout's root, with WHY3CONFIG set; proofs/run.sh does both).
 #   L64, L32  the lemmas of each family (proofs/lemmas.c, proofs/lemmas_f.c)
+#   LP64      the lemmas of specs/cbx_psph.h, cbx_pnear.h, cbx_pball.h
+#             (proofs/lemmas_p.c; the goals: those files' lemmas, by name)
 #   A64, A32  the functions marked /* proof: -wp-split */ in their source
 #             (their two-sided postconditions over several behaviors time
 #             out whole, and one goal per side proves fastest)
@@ -23,6 +25,8 @@
 #             src/f64/cbx_quat.h and the cells of src/f64/cbx_cell.h, with
 #             the lemmas of specs/cbx_iv_logic.h and cbx_imat_logic.h; its
 #             smoke tests
+#   PSR64     the functions of PS64's files marked /* proof: race */
+#             (proofs/fcts.py: psphrace), both provers raced in pass 1
 #   PS64, SPS64 a ball under a projective map (proofs/psph.c:
 #             src/f64/cbx_psph.c, on the interval arithmetic of T64, with
 #             the lemmas of specs/cbx_psph.h, cbx_ball.h, cbx_iv_logic.h);
@@ -30,6 +34,10 @@
 #   PN64, SPN64 a box under a projective map clipped at a near plane
 #             (proofs/pnear.c: src/f64/cbx_pnear.c, on T64 and the
 #             enclosures of PS64, with the lemmas of specs/cbx_pnear.h);
+#             its smoke tests
+#   PB64, SPB64 a ball under a projective map clipped at a near plane
+#             (proofs/pball.c: src/f64/cbx_pball.c, on T64 and the
+#             enclosures of PS64, with the lemmas of specs/cbx_pball.h);
 #             its smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
@@ -117,14 +125,19 @@ case $name in
   SI64) TU=proofs/imat.c; OPTS="$SMOKE $NOGOALS"; SG=imat ;;
   T64) TU=proofs/trs.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU trs)" ;;
   PS64) TU=proofs/psph.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU psph)" ;;
-  SPS64) TU=proofs/psph.c; OPTS="$SMOKE $NOGOALS"; SG=psph ;;
+  PSR64) TU=proofs/psph.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU psphrace)" ;;
+  SPS64) TU=proofs/psph.c; OPTS="$SMOKE $NOGOALS"; SG=psph,psphrace ;;
   PN64) TU=proofs/pnear.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pnear)" ;;
   SPN64) TU=proofs/pnear.c; OPTS="$SMOKE $NOGOALS"; SG=pnear ;;
+  PB64) TU=proofs/pball.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pball)" ;;
+  SPB64) TU=proofs/pball.c; OPTS="$SMOKE $NOGOALS"; SG=pball ;;
   ST64) TU=proofs/trs.c; OPTS="$SMOKE $NOGOALS"; SG=trs ;;
   P64|P32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS=$WP; SEL="-wp-fct $(fcts $TU proj)" ;;
   PA64|PA32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU projsplit)" ;;
   SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SG=proj,projsplit ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
+  LP64) TU=proofs/lemmas_p.c; OPTS=$WP
+    SEL="-wp-prop $(grep -ho 'lemma [a-z0-9_]*:' specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h | sed 's/lemma //; s/://' | paste -sd, -)" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
   BS64|BS32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP $BALL"; SEL="-wp-fct $(fcts $TU ball)" ;;
   BSA64|BSA32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split $BALL"; SEL="-wp-fct $(fcts $TU ballsplit)" ;;
@@ -172,12 +185,12 @@ case $name in
     else
       CACHE="-wp-cache none"
     fi
-    # The lemma jobs race both provers from pass 1: Z3 proves lagrange and
+    # The lemma jobs (and PSR64) race both provers from pass 1: Z3 proves lagrange and
     # irow_in_terms in under 0.1 s where CVC4 times out, and a lemma job's
     # pass 2 regenerates every lemma (measured at 492e631: L64 54 s, L32
     # 40 s, each with that 20 s timeout and a second pass).
     P1=cvc4r$fam
-    case $name in L*) P1=cvc4r$fam,z3r$fam ;; esac
+    case $name in L*|PSR64) P1=cvc4r$fam,z3r$fam ;; esac
     # shellcheck disable=SC2086
     $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-40} $CACHE \
       > $out/wp-$name.log 2>&1 || true

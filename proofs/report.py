@@ -20,6 +20,7 @@ TIME = re.compile(r'\((\d+(?:\.\d+)?)(ms|s)\)')
 SMOKE = re.compile(r'^\[wp\] \[(\w+)\] Smoke-test (\S+)', re.M)
 JOBS = {
     'L64': 'binary64 lemmas', 'L32': 'binary32 lemmas',
+    'LP64': 'binary64 lemmas of the projective balls and clipped bounds (proofs/lemmas_p.c)',
     'A64': 'binary64 functions marked for -wp-split',
     'A32': 'binary32 functions marked for -wp-split',
     'K64': 'binary64 primitives and kernels (src/core, src/algo headers)',
@@ -33,8 +34,11 @@ JOBS = {
     'ST64': 'binary64 rotation-motion smoke tests',
     'PS64': 'binary64 ball under a projective map (proofs/psph.c)',
     'SPS64': 'binary64 projected-ball smoke tests',
+    'PSR64': 'binary64 ball under a projective map: functions marked for both provers (proofs/psph.c)',
     'PN64': 'binary64 box clipped at a near plane (proofs/pnear.c)',
+    'PB64': 'binary64 ball clipped at a near plane (proofs/pball.c)',
     'SPN64': 'binary64 clipped-box smoke tests',
+    'SPB64': 'binary64 clipped-ball smoke tests',
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
     'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',
     'SP64': 'binary64 projective-bound smoke tests', 'SP32': 'binary32 projective-bound smoke tests',
@@ -194,7 +198,7 @@ def main():
     out.append('Tools: %s; %s; %s; %s.' % (tool('frama-c -version'), tool('why3 --version'),
                tool('cvc4 --version | head -1'), tool('z3 -version')))
     out.append('Wall time: %s s in all (%s jobs at a time, %s prover processes each).\n'
-               % (wall, os.environ.get('CBX_JOBS', str(os.cpu_count())), os.environ.get('CBX_WP_PAR', '?')))
+               % (wall, os.environ.get('CBX_JOBS', str((os.cpu_count() or 2) + 1)), os.environ.get('CBX_WP_PAR', '?')))
     if unfinished:
         out.append('Jobs that did not finish: %s\n' % ', '.join(unfinished))
     if failed:

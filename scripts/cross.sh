@@ -27,7 +27,7 @@ LIB="src/*/cbx_*.c"
 # compared with build/test_NAME_nofma; eft: both two_prod forms, GMP)
 GLTFDIR=/usr/share/assimp/models/glTF2
 GLTF_N=${CROSS_GLTF_N:-20000}
-SUITES=${CROSS_SUITES:-"classes:20000,1 exact:200000,1 float:50000,1 sphere:20000,1 trs:2000,1 psphere:4000,1 pnear:4000,1 tight:10,1 tight_nofma:10,1 batch:20,1 alias:10000,1 cbox:30000,1 imat:20000,5000,1 halfspace:20,1 eft:100,1 special: chain:200,5,1 badinput:"}
+SUITES=${CROSS_SUITES:-"classes:20000,1 exact:200000,1 float:50000,1 sphere:20000,1 trs:2000,1 psphere:4000,1 pnear:4000,1 pball:2000,1 tight:10,1 tight_nofma:10,1 batch:20,1 alias:10000,1 cbox:30000,1 imat:20000,5000,1 halfspace:20,1 eft:100,1 special: chain:200,5,1 badinput:"}
 # one suite: build it for ARM (against the ARM library built once below),
 # run it here and under qemu, compare; the verdict line goes to
 # $B/NAME.verdict, with the suite's time
@@ -48,7 +48,7 @@ suite() {
     args="$GLTFDIR tests/data/gltf build/certbox $GLTF_N (ARM: $QEMU $B/certbox)"
   else
   # shellcheck disable=SC2086
-  $XCC $F $extra tests/test_$src.c tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/proj_cases.c $lib -static -lmpfr -lgmp -lm -o $B/test_$name
+  $XCC $F $extra tests/test_$src.c tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c $lib -static -lmpfr -lgmp -lm -o $B/test_$name
   # shellcheck disable=SC2086
   ./build/test_$name $args > $B/$name.host.txt 2>&1 || true
   # shellcheck disable=SC2086

@@ -65,7 +65,7 @@ SUITES = [
     ('badinput', []), ('special', []), ('exact', ['100000', '1']), ('cbox', ['30000', '1']),
     ('sphere', ['20000', '1']), ('alias', ['10000', '1']), ('halfspace', ['20', '1']),
     ('chain', ['200', '5', '1']), ('batch', ['50', '1']), ('tight', ['10', '1']),
-    ('classes', ['20000', '1']), ('float', ['50000', '1']), ('imat', ['40000', '10000', '1']), ('plane', ['20000', '1']), ('project', ['4000', '1']), ('trs', ['3000', '1']), ('psphere', ['4000', '1']), ('pnear', ['4000', '1']), ('ieee', []),
+    ('classes', ['20000', '1']), ('float', ['50000', '1']), ('imat', ['40000', '10000', '1']), ('plane', ['20000', '1']), ('project', ['4000', '1']), ('trs', ['3000', '1']), ('psphere', ['4000', '1']), ('pnear', ['4000', '1']), ('pball', ['4000', '1']), ('ieee', []),
     ('ieee', ['ftz', '4']), ('ieee', ['ftzonly', '4']), ('ieee', ['daz', '4']), ('ieee', ['up', '8']), ('ieee', ['down', '8']), ('ieee', ['zero', '8']),
     ('scene', sorted(glob.glob(os.path.join(ROOT, 'examples', '*.scene')))),
     # the scene tool's glTF reader (tools/certbox/gltf.c), against GMP, on
@@ -305,7 +305,7 @@ def coverage(raw, b):
             if name == 'gltf':
                 extra = gltf + ['-DCBX_GLTF', '-Itools/certbox'] + jansson_flags('--cflags') + jansson_flags('--libs')
             sh([CC] + FLAGS + ['-O0', '--coverage', *INCS, '-Itests', 'tests/test_%s.c' % name,
-                               'tests/exact_util.c', 'tests/proj_oracle.c', 'tests/psph_oracle.c', 'tests/pnear_oracle.c', 'tests/proj_cases.c'] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
+                               'tests/exact_util.c', 'tests/proj_oracle.c', 'tests/psph_oracle.c', 'tests/pnear_oracle.c', 'tests/pball_oracle.c', 'tests/proj_cases.c'] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
         r = sh([exe] + args, check=False)
         # the -O0 build must compute exactly what the -O2 build did
         ref = open(os.path.join(raw, 'tests', run_name(i) + '.txt')).read()

@@ -5,11 +5,12 @@
 #
 # SECONDS: time per harness (default 60), passed to -max_total_time.
 # HARNESS: any of transform_box transform_cbox box_to_cbox cbox_to_box
-#          sphere_box ellipsoid_box plane project psphere pnear gltf (default: all eleven,
+#          sphere_box ellipsoid_box plane project psphere pnear pball gltf (default: all twelve,
 #          one after the other).  plane (tests/fuzz/fuzz_plane.c): the 2D
 #          family; project (tests/fuzz/fuzz_project.c): the projective bound;
 #          psphere (tests/fuzz/fuzz_psphere.c): a ball under a projective map;
-#          pnear (tests/fuzz/fuzz_pnear.c): a box clipped at a near plane.
+#          pnear (tests/fuzz/fuzz_pnear.c): a box clipped at a near plane;
+#          pball (tests/fuzz/fuzz_pball.c): a ball clipped at a near plane.
 #
 # gltf (tests/fuzz/fuzz_gltf.c): the scene tool's glTF reader
 # (tools/certbox/gltf.c) on arbitrary file contents, against the exact oracle
@@ -43,7 +44,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT" || exit 2
 SECS=${1:-60}
 [ $# -gt 0 ] && shift
-ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane project psphere pnear gltf"
+ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane project psphere pnear pball gltf"
 GLTFDIR=/usr/share/assimp/models/glTF2
 # the gltf harness's seeds (self-contained files: GLB, data: URIs; and a few
 # refused ones)
@@ -149,7 +150,7 @@ for h in $HARNESSES; do
     fi
     echo "fuzz: building $B/fuzz_$h" >&2
     # shellcheck disable=SC2086
-    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/proj_cases.c \
+    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c \
         "$B/libcertbox-fuzz.a" -lmpfr -lgmp -lm -o "$B/fuzz_$h" || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
 done
 

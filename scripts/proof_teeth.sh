@@ -155,6 +155,25 @@ case_ pnear-witness-hi src/f64/cbx_pnear.c pn_witness proofs/pnear.c ok ensures_
 case_ pnear-behind-lo src/f64/cbx_pnear.c pn_behind proofs/pnear.c '' ensures_void \
   "    return f < wn;" \
   "    return f - 1.0 < wn;" - &
+# 23. a clipped ball: the certificate without the near plane's share
+case_ pball-lam-no-wn src/f64/cbx_pball.c pb_cert proofs/pball.c le,lam,mb,pv,ml,lw0,lw,hi assert_ml \
+  "    m = iv_mul(iv_pt(lam), iv_pt(wn));" \
+  "    m = iv_mul(iv_pt(lam), iv_pt(1.0));" - &
+# 24. a clipped ball: the witness taken in front of the near plane by its
+#    enclosure's upper end
+case_ pball-witness-hi src/f64/cbx_pball.c pb_witness proofs/pball.c in,ok 'assert_in\|ensures_ok' \
+  "            if (w.lo >= wn) {" \
+  "            if (w.hi >= wn) {" - &
+# 25. a clipped ball: "all behind the near plane" from the enclosure's
+#    lower end of W's largest value
+case_ pball-behind-lo src/f64/cbx_pball.c pb_behind proofs/pball.c le,void ensures_void \
+  "    return f.hi < wn;" \
+  "    return f.lo < wn;" - &
+# 26. a clipped ball: the witness's "inside the unit ball" from the lower
+#    end of its |q|^2 enclosure
+case_ pball-unit-lo src/f64/cbx_pball.c pb_unit proofs/pball.c r0,in0,rg,i01,r01,i,ok ensures_ok \
+  "        ok = s.hi <= 1.0;" \
+  "        ok = s.lo <= 1.0;" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

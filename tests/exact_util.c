@@ -1499,6 +1499,21 @@ void xu_aff_q(mpq_t q, const double m[4], mpq_t const x[3])
     mpq_clear(t);
 }
 
+void xu_dot3_q(mpq_t q, const double u[4], const double v[4])
+{
+    mpq_t t, w;
+    int j;
+    mpq_inits(t, w, NULL);
+    mpq_set_ui(q, 0, 1);
+    for (j = 0; j < 3; j++) {
+        mpq_set_d(t, u[j]);
+        mpq_set_d(w, v[j]);
+        mpq_mul(t, t, w);
+        mpq_add(q, q, t);
+    }
+    mpq_clears(t, w, NULL);
+}
+
 int xu_cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;

@@ -48,22 +48,6 @@ static void add_dist(double u)
 }
 
 /* ---- exact pieces ---------------------------------------------------------- */
-/* u . v of the linear parts (j < 3) */
-static void dot_q(mpq_t q, const double u[4], const double v[4])
-{
-    mpq_t t, w;
-    int j;
-    mpq_inits(t, w, NULL);
-    mpq_set_ui(q, 0, 1);
-    for (j = 0; j < 3; j++) {
-        mpq_set_d(t, u[j]);
-        mpq_set_d(w, v[j]);
-        mpq_mul(t, t, w);
-        mpq_add(q, q, t);
-    }
-    mpq_clears(t, w, NULL);
-}
-
 /* sign of B - |r| |b| (B = W(c)), exactly: B > 0 and B^2 > r^2 |b|^2 */
 static int front_sign(const mpq_t B, const mpq_t r2, const mpq_t bb)
 {
@@ -149,7 +133,7 @@ static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
         mpq_set_d(cq[j], C[j]);
     }
     xu_aff_q(B, P[3], (mpq_t const *)cq);
-    dot_q(bb, P[3], P[3]);
+    xu_dot3_q(bb, P[3], P[3]);
     mpq_set_d(r2, R);
     mpq_mul(r2, r2, r2);
     for (j = 0; j < 3; j++)
@@ -171,8 +155,8 @@ static void exact_ends(int i, mpfr_t l0, mpfr_t l1, mpfr_t h0, mpfr_t h1)
     mpfr_inits2(PREC, sd, su, (mpfr_ptr)0);
     ball_w(B, bb, r2);
     xu_aff_q(A, P[i], (mpq_t const *)cq);
-    dot_q(aa, P[i], P[i]);
-    dot_q(ab, P[i], P[3]);
+    xu_dot3_q(aa, P[i], P[i]);
+    xu_dot3_q(ab, P[i], P[3]);
     mpq_mul(al, B, B);
     mpq_mul(t, r2, bb);
     mpq_sub(al, al, t);        /* alpha = B^2 - r^2 |b|^2 > 0 */

@@ -436,6 +436,23 @@ static void pnear(void)
     seed(H, "inf-box", 0x00, 23, CAM90, -0.5, 0.5, -0.5, INF, -1, 1, 0.1);
 }
 
+static void pball(void)
+{
+    const char *H = "pball";
+    seed(H, "camera-ball-front", 0x00, 21, CAM90, 0, 0, -5, 1, 0.1);
+    seed(H, "camera-ball-crossing", 0x00, 21, CAM90, 0.5, 0, -0.5, 1, 0.1);
+    seed(H, "camera-ball-around", 0x00, 21, CAM90, 0, 0, 0, 4, 0.1);
+    seed(H, "camera-ball-behind", 0x00, 21, CAM90, 0, 0, 5, 1, 0.1);
+    seed(H, "camera-ball-touching", 0x01, 21, CAM90, 0, 0, 0.9, 1, 0.1);
+    seed(H, "depth-row-parallel", 0x03, 21, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, -2, -1, 0, 0, -1, 0, 1, 2, -3, 4, 0.5);
+    seed(H, "w-const", 0x00, 21, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, 1, 2, 3, 4, 2);
+    seed(H, "zero-radius", 0x00, 21, CAM90, 0, 0, -0.1, 0, 0.1);
+    seed(H, "negative-radius", 0x00, 21, CAM90, 0.5, 0, -0.5, -1, 0.1);
+    seed(H, "zero-wn", 0x00, 21, CAM90, 0, 0, -1, 2, 0);
+    seed(H, "nan-wn", 0x00, 21, CAM90, 0, 0, -1, 2, NaN);
+    seed(H, "inf-radius", 0x00, 21, CAM90, 0, 0, -1, INF, 0.1);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -454,6 +471,7 @@ int main(int argc, char **argv)
     project();
     psphere();
     pnear();
+    pball();
     printf("make_corpus: %d seeds written under %s\n", nwritten, outdir);
     return 0;
 }
