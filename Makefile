@@ -99,7 +99,9 @@ $(B)/certbox.pc: certbox.pc.in Makefile
 	    -e 's#@VERSION@#$(VERSION)#' $< > $@
 
 # ---- tests ---------------------------------------------------------------
-TESTUTIL := tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c
+# the oracles and helpers every test links (scripts/testutil.sh: the same list
+# for the scripts that build tests outside make)
+TESTUTIL := $(shell sh scripts/testutil.sh)
 $(B)/demo: examples/demo.c $(TESTUTIL) $(B)/libcertbox.a tests/exact_util.h
 	$(CC) $(PUBCFLAGS) -Itests examples/demo.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # The scene tool (issue 6): tools/certbox/, built with the library's flags.  An

@@ -48,7 +48,7 @@ suite() {
     args="$GLTFDIR tests/data/gltf build/certbox $GLTF_N (ARM: $QEMU $B/certbox)"
   else
   # shellcheck disable=SC2086
-  $XCC $F $extra tests/test_$src.c tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c $lib -static -lmpfr -lgmp -lm -o $B/test_$name
+  $XCC $F $extra tests/test_$src.c $(sh scripts/testutil.sh) $lib -static -lmpfr -lgmp -lm -o $B/test_$name
   # shellcheck disable=SC2086
   ./build/test_$name $args > $B/$name.host.txt 2>&1 || true
   # shellcheck disable=SC2086

@@ -50,6 +50,8 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # the library's include folders (scripts/incs.sh: one list for every build)
 INCS = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
+# the oracles and helpers every test links (scripts/testutil.sh)
+TESTUTIL = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'testutil.sh')], text=True).split()
 sys.path.insert(0, os.path.join(ROOT, 'scripts', 'evidence'))
 sys.path.insert(0, os.path.join(ROOT, 'proofs'))
 import contracts  # noqa: E402
@@ -305,7 +307,7 @@ def coverage(raw, b):
             if name == 'gltf':
                 extra = gltf + ['-DCBX_GLTF', '-Itools/certbox'] + jansson_flags('--cflags') + jansson_flags('--libs')
             sh([CC] + FLAGS + ['-O0', '--coverage', *INCS, '-Itests', 'tests/test_%s.c' % name,
-                               'tests/exact_util.c', 'tests/proj_oracle.c', 'tests/psph_oracle.c', 'tests/pnear_oracle.c', 'tests/pball_oracle.c', 'tests/proj_cases.c'] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
+                               *TESTUTIL] + objs + extra + ['-lmpfr', '-lgmp', '-lm', '-o', exe])
         r = sh([exe] + args, check=False)
         # the -O0 build must compute exactly what the -O2 build did
         ref = open(os.path.join(raw, 'tests', run_name(i) + '.txt')).read()

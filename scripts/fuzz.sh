@@ -150,7 +150,7 @@ for h in $HARNESSES; do
     fi
     echo "fuzz: building $B/fuzz_$h" >&2
     # shellcheck disable=SC2086
-    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c \
+    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" $(sh scripts/testutil.sh) \
         "$B/libcertbox-fuzz.a" -lmpfr -lgmp -lm -o "$B/fuzz_$h" || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
 done
 

@@ -1514,6 +1514,38 @@ void xu_dot3_q(mpq_t q, const double u[4], const double v[4])
     mpq_clears(t, w, NULL);
 }
 
+void xu_ball_point(mpq_t x[3], const double c[3], double r, double u, double v, double s)
+{
+    mpq_t q, uq, vq, den, t;
+    int j;
+    mpq_inits(q, uq, vq, den, t, NULL);
+    mpq_set_d(uq, u);
+    mpq_set_d(vq, v);
+    mpq_mul(den, uq, uq);
+    mpq_mul(t, vq, vq);
+    mpq_add(den, den, t);
+    mpq_set_ui(t, 1, 1);
+    mpq_add(den, den, t);                    /* 1 + u^2 + v^2 */
+    for (j = 0; j < 3; j++) {
+        if (j == 0) {
+            mpq_add(q, uq, uq);
+        } else if (j == 1) {
+            mpq_add(q, vq, vq);
+        } else {
+            mpq_set_ui(t, 2, 1);
+            mpq_sub(q, den, t);              /* u^2 + v^2 - 1 */
+        }
+        mpq_div(q, q, den);
+        mpq_set_d(t, r);
+        mpq_mul(q, q, t);
+        mpq_set_d(t, s);
+        mpq_mul(q, q, t);
+        mpq_set_d(t, c[j]);
+        mpq_add(x[j], t, q);
+    }
+    mpq_clears(q, uq, vq, den, t, NULL);
+}
+
 int xu_cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;

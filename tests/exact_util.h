@@ -291,12 +291,16 @@ void xu_print_box(FILE *f, const char *label, const cbx_box *b);
 
 /* Shared by the projective oracles (tests/psph_oracle.c, pnear_oracle.c,
  * pball_oracle.c): the special outputs, an affine row at a rational point,
- * the dot product of two rows' linear parts, and qsort's order on
- * doubles. */
+ * the dot product of two rows' linear parts, a rational point of a ball,
+ * and qsort's order on doubles. */
 int xu_whole_box(const cbx_box *o);   /* every axis [-inf, +inf] */
 int xu_empty_box(const cbx_box *o);   /* every axis lo = +inf, hi = -inf */
 void xu_aff_q(mpq_t q, const double m[4], mpq_t const x[3]);   /* m0 x0 + m1 x1 + m2 x2 + m3, exactly */
 void xu_dot3_q(mpq_t q, const double u[4], const double v[4]);  /* u0 v0 + u1 v1 + u2 v2, exactly */
+/* x = c + r s q, q = (2u, 2v, u^2 + v^2 - 1) / (1 + u^2 + v^2) on the unit
+ * sphere (exactly): a rational point of the ball |x - c| <= |r| for s in
+ * [0, 1] (x initialised by the caller) */
+void xu_ball_point(mpq_t x[3], const double c[3], double r, double u, double v, double s);
 int xu_cmp_double(const void *a, const void *b);
 
 /* ---- helpers for test_cbox, test_sphere and the demo (GMP only) --------

@@ -215,39 +215,15 @@ static int within_tau(double end, const mpfr_t x)
 }
 
 /* ---- containment at rational points of the ball ---------------------------- */
-/* x = c + r s q, q = (2u, 2v, u^2 + v^2 - 1) / (1 + u^2 + v^2) on the unit
- * sphere (exactly), s in [0, 1] */
+/* the point c + r s q of xu_ball_point, s in [0, 1] */
 static void point_check(const cbx_box *o, double u, double v, double s)
 {
-    mpq_t x[3], q, uq, vq, den, t, X, W;
+    mpq_t x[3], t, X, W;
     int j, i;
     for (j = 0; j < 3; j++)
         mpq_init(x[j]);
-    mpq_inits(q, uq, vq, den, t, X, W, NULL);
-    mpq_set_d(uq, u);
-    mpq_set_d(vq, v);
-    mpq_mul(den, uq, uq);
-    mpq_mul(t, vq, vq);
-    mpq_add(den, den, t);
-    mpq_set_ui(t, 1, 1);
-    mpq_add(den, den, t);                    /* 1 + u^2 + v^2 */
-    for (j = 0; j < 3; j++) {
-        if (j == 0) {
-            mpq_add(q, uq, uq);
-        } else if (j == 1) {
-            mpq_add(q, vq, vq);
-        } else {
-            mpq_set_ui(t, 2, 1);
-            mpq_sub(q, den, t);              /* u^2 + v^2 - 1 */
-        }
-        mpq_div(q, q, den);
-        mpq_set_d(t, R);
-        mpq_mul(q, q, t);
-        mpq_set_d(t, s);
-        mpq_mul(q, q, t);
-        mpq_set_d(t, C[j]);
-        mpq_add(x[j], t, q);
-    }
+    mpq_inits(t, X, W, NULL);
+    xu_ball_point(x, C, R, u, v, s);
     xu_aff_q(W, P[3], (mpq_t const *)x);
     check(mpq_sgn(W) > 0, "W > 0 at a point of the ball");
     for (i = 0; i < 3; i++) {
@@ -262,7 +238,7 @@ static void point_check(const cbx_box *o, double u, double v, double s)
     S->points++;
     for (j = 0; j < 3; j++)
         mpq_clear(x[j]);
-    mpq_clears(q, uq, vq, den, t, X, W, NULL);
+    mpq_clears(t, X, W, NULL);
 }
 
 /* ---- the round-to-nearest closed form (shown) ------------------------------- */

@@ -246,6 +246,40 @@ static inline double ps_dot(double m0, double m1, double m2, double n0, double n
     return ps_add(ps_add(ps_mul(m0, n0), ps_mul(m1, n1)), ps_mul(m2, n2));
 }
 
+/* x / y rounded (clamped), for y >= 2^-400. */
+/*@ requires \is_finite(x) && \is_finite(y) && -PS_L <= x <= PS_L && 0x1p-400 <= y <= PS_L;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static inline double ps_qt(double x, double y)
+{
+    cbx_iv q;
+    /*@ assert r: \abs(x) <= CBX_QR * y; */
+    q = iv_div(iv_pt(x), iv_pt(y));
+    return ps_cl(q.lo);
+}
+
+/* A first guess at a witness's fraction of the way toward larger W, in
+ * round-to-nearest (the clipped bounds' searches check whatever it gives):
+ * twice what lifts an enclosure w of W by its shortfall under wn plus its
+ * width, at the rate of W per unit of the fraction; clamped to [0, 1], 0
+ * when the rate is below 2^-400 or nothing is short. */
+/*@ requires \is_finite(w.lo) && \is_finite(w.hi) && \is_finite(wn);
+    requires \is_finite(rate) && -PS_L <= rate <= PS_L;
+    assigns \nothing;
+    ensures \is_finite(\result) && 0 <= \result <= 1;
+*/
+static inline double ps_frac(cbx_iv w, double wn, double rate)
+{
+    double lo = ps_cl(w.lo);
+    double need = ps_add(ps_sub(ps_cl(wn), lo), ps_sub(ps_cl(w.hi), lo));
+    double f = 0.0;
+    if (rate >= 0x1p-400 && need > 0.0) {
+        f = ps_qt(ps_mul(need, 2.0), rate);
+    }
+    return f > 1.0 ? 1.0 : f > 0.0 ? f : 0.0;
+}
+
 /* ---- the width of a certified end ---------------------------------------- */
 /* 1 only if x - y <= 2^-20 (1 + |v|) (specs/cbx_psph.h: ps_tau). */
 /*@ requires fin: \is_finite(x) && \is_finite(y) && \is_finite(v);

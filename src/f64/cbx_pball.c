@@ -21,14 +21,18 @@
  * nothing overflows, otherwise unproven) and certified (pb_find):
  *   - sound at t = t0 + d: the outward-rounded enclosure of h(s) at most
  *     (t - s) wn rounded down (pb_cert), s = s* or s = t;
- *   - tight at t0 - d: a point c + r q of the ball, q the direction
- *     sign(r) k(s) / |k(s)| that attains h(s) (shrunk by 2^-47), moved the
- *     least fraction toward the direction of largest W that puts it in
- *     front of the plane (pb_witness), with X - (t0 - d) W > 0 there, all
- *     in interval arithmetic (pb_wit);
- *   - 2 d <= 2^-20 (1 + |end|) (ps_span).
- * d starts at 2^-48 (1 + |t0|) and grows by 4 up to 13 times.  The lower
- * end is the upper end of -X_i (specs/cbx_pball.h: pb_lo_neg).
+ *   - tight at t0 - 64 d (t0 - d where that span is too wide; only
+ *     t0 + d is returned, so the witness's room costs nothing): a point
+ *     c + r q of the ball, q the direction sign(r) k(s) / |k(s)| that
+ *     attains h(s) (shrunk by 2^-47), moved the least fraction toward the
+ *     direction of largest W that puts it in front of the plane
+ *     (pb_witness: 0, then a first guess from W's shortfall there, then 16
+ *     times the last), with X - (t0 - 64 d) W > 0 there, all in interval
+ *     arithmetic (pb_wit);
+ *   - the span t0 + d - (t0 - 64 d) <= 2^-20 (1 + |end|) (ps_span), tested
+ *     first.
+ * d starts at 2^-48 (1 + |t0|) and grows by 4 up to 13 times.
+ * The lower end is the upper end of -X_i (specs/cbx_pball.h: pb_lo_neg).
  *
  * Statuses: NaN anywhere (wn included) -> CBX_EINVAL, whole space; outside
  * the domain (pb_dom: linear entries, center and radius at most 2^60,
@@ -205,19 +209,6 @@ static int pb_wit(double t, double q0, double q1, double q2, double a0, double a
 }
 
 /* ---- round-to-nearest pieces of the candidates and the witness --------- */
-/* x / y rounded (clamped), for y >= 2^-400. */
-/*@ requires \is_finite(x) && \is_finite(y) && -PS_L <= x <= PS_L && 0x1p-400 <= y <= PS_L;
-    assigns \nothing;
-    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
-*/
-static double pb_qt(double x, double y)
-{
-    cbx_iv q;
-    /*@ assert r: \abs(x) <= CBX_QR * y; */
-    q = iv_div(iv_pt(x), iv_pt(y));
-    return ps_cl(q.lo);
-}
-
 /* sqrt(max(x, 0)) rounded. */
 /*@ requires \is_finite(x) && -PS_L <= x <= PS_L;
     assigns \nothing;
@@ -262,9 +253,9 @@ static pb_q pb_unitv(double v0, double v1, double v2, double r)
     q.q2 = 0.0;
     q.ok = 1;
     if (n >= 0x1p-400) {
-        q.q0 = pb_c1(ps_mul(pb_qt(v0, n), f));
-        q.q1 = pb_c1(ps_mul(pb_qt(v1, n), f));
-        q.q2 = pb_c1(ps_mul(pb_qt(v2, n), f));
+        q.q0 = pb_c1(ps_mul(ps_qt(v0, n), f));
+        q.q1 = pb_c1(ps_mul(ps_qt(v1, n), f));
+        q.q2 = pb_c1(ps_mul(ps_qt(v2, n), f));
     }
     return q;
 }
@@ -283,9 +274,27 @@ static double pb_next(double f)
     return n > 1.0 ? 1.0 : n;
 }
 
+/* The rate of W at c + r q per unit of the witness's fraction along
+ * g - k: r b.(g - k), in round-to-nearest (for ps_frac). */
+/*@ requires k: \is_finite(k.q0) && \is_finite(k.q1) && \is_finite(k.q2)
+                && -1 <= k.q0 <= 1 && -1 <= k.q1 <= 1 && -1 <= k.q2 <= 1;
+    requires g: \is_finite(g.q0) && \is_finite(g.q1) && \is_finite(g.q2)
+                && -1 <= g.q0 <= 1 && -1 <= g.q1 <= 1 && -1 <= g.q2 <= 1;
+    requires b: \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(r)
+                && -PS_M <= b0 <= PS_M && -PS_M <= b1 <= PS_M && -PS_M <= b2 <= PS_M
+                && -PS_M <= r <= PS_M;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double pb_rate(pb_q k, pb_q g, double b0, double b1, double b2, double r)
+{
+    return ps_mul(r, ps_dot(b0, b1, b2, ps_sub(g.q0, k.q0), ps_sub(g.q1, k.q1), ps_sub(g.q2, k.q2)));
+}
+
 /* The witness: the start direction k (the point of the ball where the
  * candidate end is attained, in round-to-nearest), moved the least
- * fraction (0, then 2^-60, 2^-56, ..., 1) toward the direction of largest
+ * fraction (0, then the first guess of ps_frac or 2^-60 if larger, then
+ * 16 times the last, up to 1) toward the direction of largest
  * W for which c + r q is in the ball and in front of the near plane in
  * interval arithmetic; ok 0 when none. */
 /*@ requires args: pb_args(b0, b1, b2, b3, b0, b1, b2, b3, c0, c1, c2, r, wn);
@@ -317,6 +326,7 @@ static pb_q pb_witness(pb_q k, double b0, double b1, double b2, double b3,
         double y0 = pb_c1(ps_add(k.q0, ps_mul(frac, ps_sub(g.q0, k.q0))));
         double y1 = pb_c1(ps_add(k.q1, ps_mul(frac, ps_sub(g.q1, k.q1))));
         double y2 = pb_c1(ps_add(k.q2, ps_mul(frac, ps_sub(g.q2, k.q2))));
+        double nx = pb_next(frac);
         if (pb_unit(y0, y1, y2)) {
             cbx_iv w = pb_val(0.0, b0, b1, b2, b3, b0, b1, b2, b3, c0, c1, c2, r, y0, y1, y2);
             if (w.lo >= wn) {
@@ -327,8 +337,12 @@ static pb_q pb_witness(pb_q k, double b0, double b1, double b2, double b3,
                 o.ok = 1;
                 break;
             }
+            if (frac == 0.0) {
+                double gs = ps_frac(w, wn, pb_rate(k, g, b0, b1, b2, r));
+                nx = gs > nx ? gs : nx;
+            }
         }
-        frac = pb_next(frac);
+        frac = nx;
     }
     return o;
 }
@@ -445,14 +459,14 @@ static pb_mu pb_mult(double a0, double a1, double a2, double b0, double b1, doub
     m.ok = 0;
     m.uh = pb_perp(1.0, 0.0, 0.0);
     if (nb2 >= 0x1p-400 && rb >= 0x1p-400) {
-        double al = pb_qt(ps_dot(a0, a1, a2, b0, b1, b2), nb2);
-        double g = pb_qt(ps_sub(B, wn), rb);
+        double al = ps_qt(ps_dot(a0, a1, a2, b0, b1, b2), nb2);
+        double g = ps_qt(ps_sub(B, wn), rb);
         if (g > -1.0 && g < 1.0) {
             double rho = pb_sqrt(ps_sub(1.0, ps_mul(g, g)));
             double den = ps_mul(nb, rho);
             if (den >= 0x1p-400) {
                 pb_uv u = pb_uperp(a0, a1, a2, b0, b1, b2, al);
-                m.s = ps_add(al, pb_qt(ps_mul(g, u.n), den));
+                m.s = ps_add(al, ps_qt(ps_mul(g, u.n), den));
                 m.g = g;
                 m.rho = rho;
                 m.uh = u.d;
@@ -481,7 +495,7 @@ static double pb_tend(double s, double a0, double a1, double a2, double b0, doub
     double k2 = ps_sub(a2, ps_mul(s, b2));
     double n = pb_sqrt(ps_dot(k0, k1, k2, k0, k1, k2));
     double h = ps_add(ps_sub(A, ps_mul(s, B)), ps_mul(cbx_abs(r), n));
-    return ps_add(s, pb_qt(h, wn));
+    return ps_add(s, ps_qt(h, wn));
 }
 
 /* The end's point on the circle: sign(r) (rho u / |u| - g b / |b|). */
@@ -533,8 +547,22 @@ static pb_cand pb_clip(double a0, double a1, double a2, double a3,
 /* ---- the search --------------------------------------------------------- */
 typedef struct pb_fin { double v, w; int ok; } pb_fin;
 
+/* The promise of a found upper end (pb_find, pb_upper), written once: v
+ * finite with X <= v W at every point in front, w with some point in front
+ * above it, v - w <= ps_tau(v).  A macro, not a predicate: WP then hands
+ * the provers the conjuncts themselves (with a predicate over the struct,
+ * CVC4 did not unfold it for pb_axis_of's assertion lo within 40 s). */
+#define PB_FOUND \
+    ensures fin: \result.ok != 0 ==> \is_finite(\result.v) && \is_finite(\result.w) \
+      && -PS_B <= \result.v <= PS_B; \
+    ensures hi: \result.ok != 0 ==> \
+      pb_hi(\result.v, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn) \
+      && \result.v - ps_tau(\result.v) <= \result.w \
+      && pb_above(\result.w, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
+
 /* One try: sound at th (with s = s* for a clipped candidate, s = th
- * otherwise), the witness q above tl, th - tl within ps_tau(th). */
+ * otherwise), the witness q above tl, th - tl within ps_tau(th) (the
+ * cheap span first). */
 /*@ requires args: pb_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
     requires q: \is_finite(q.q0) && \is_finite(q.q1) && \is_finite(q.q2)
                 && -1 <= q.q0 <= 1 && -1 <= q.q1 <= 1 && -1 <= q.q2 <= 1;
@@ -550,9 +578,9 @@ static int pb_try(double th, double tl, double s, int clip, pb_q q, double a0, d
                   double c0, double c1, double c2, double r, double wn)
 {
     double m = clip != 0 ? s : th;
-    return m <= th && pb_cert(th, m, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)
-           && pb_wit(tl, q.q0, q.q1, q.q2, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)
-           && ps_span(th, tl, th);
+    return m <= th && ps_span(th, tl, th)
+           && pb_cert(th, m, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)
+           && pb_wit(tl, q.q0, q.q1, q.q2, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
 }
 
 /* The upper end from the candidate c: v with X <= v W at every point in
@@ -560,12 +588,7 @@ static int pb_try(double th, double tl, double s, int clip, pb_q q, double a0, d
 /*@ requires args: pb_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
     requires c: pb_cok(c);
     assigns \nothing;
-    ensures fin: \result.ok != 0 ==> \is_finite(\result.v) && \is_finite(\result.w)
-      && -PS_B <= \result.v <= PS_B;
-    ensures hi: \result.ok != 0 ==>
-      pb_hi(\result.v, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)
-      && \result.v - ps_tau(\result.v) <= \result.w
-      && pb_above(\result.w, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
+    PB_FOUND
 */
 static pb_fin pb_find(pb_cand c, double a0, double a1, double a2, double a3,
                       double b0, double b1, double b2, double b3,
@@ -593,7 +616,8 @@ static pb_fin pb_find(pb_cand c, double a0, double a1, double a2, double a3,
     */
     for (k = 0; k < PB_TRIES && d <= 0x1p90 && q.ok != 0; k++) {
         double th = t0 + d;
-        double tl = t0 - d;
+        double tw = ps_sub(t0, ps_mul(d, 64.0));   /* the witness's room: only th is returned */
+        double tl = ps_in(th, PS_B) && ps_in(tw, PS_B) && ps_span(th, tw, th) ? tw : t0 - d;
         if (ps_in(th, PS_B) && ps_in(tl, PS_B)
             && pb_try(th, tl, c.s, c.clip, q, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)) {
             f.v = th;
@@ -629,8 +653,8 @@ static pb_rts pb_roots(double a0, double a1, double a2, double a3,
     o.hi = pb_none(0);
     o.lo = o.hi;
     if (den >= 0x1p-400) {
-        double th = pb_qt(ps_add(h, e.sq), den);
-        double tl = pb_qt(ps_sub(h, e.sq), den);
+        double th = ps_qt(ps_add(h, e.sq), den);
+        double tl = ps_qt(ps_sub(h, e.sq), den);
         if (ps_in(th, PS_C) && ps_in(tl, PS_C)) {
             o.hi.t = th;
             o.hi.s = th;
@@ -647,12 +671,7 @@ static pb_rts pb_roots(double a0, double a1, double a2, double a3,
  * first, then the roots of the unclipped bound. */
 /*@ requires args: pb_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
     assigns \nothing;
-    ensures fin: \result.ok != 0 ==> \is_finite(\result.v) && \is_finite(\result.w)
-      && -PS_B <= \result.v <= PS_B;
-    ensures hi: \result.ok != 0 ==>
-      pb_hi(\result.v, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)
-      && \result.v - ps_tau(\result.v) <= \result.w
-      && pb_above(\result.w, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
+    PB_FOUND
 */
 static pb_fin pb_upper(double a0, double a1, double a2, double a3,
                        double b0, double b1, double b2, double b3,

@@ -20,10 +20,13 @@
  *     at an end on an edge along axis j, the exact certificate has
  *     s = a_j / b_j (X - s W constant along that edge).  pn_sound tries
  *     those four;
- *   - tight at t0 - d: a point of the box, the candidate's vertex moved a
- *     little toward larger W (pn_nudge), with W >= wn and X - (t0 - d) W > 0
- *     in interval arithmetic (pn_wit);
- *   - 2 d <= 2^-20 (1 + |end|) (ps_span).
+ *   - tight at t0 - 64 d (t0 - d where that span is too wide; only
+ *     t0 + d is returned, so the witness's room costs nothing): a point of
+ *     the box, the candidate's vertex moved a little toward larger W
+ *     (pn_nudge), with W >= wn and X - (t0 - 64 d) W > 0 in interval
+ *     arithmetic (pn_wit);
+ *   - the span t0 + d - (t0 - 64 d) <= 2^-20 (1 + |end|) (ps_span), tested
+ *     first.
  * d starts at 2^-48 (1 + |t0|) and grows by 4 up to 13 times.  The
  * witness is moved the least fraction of the way to its target (0, then
  * 2^-60, 2^-56, ..., 1) that puts it in front of the near plane in
@@ -516,8 +519,28 @@ static pn_pt pn_nudge(pn_vx w, double frac, double l0, double h0, double l1, dou
     return y;
 }
 
+/* The rate of W per unit of the witness's fraction: b_j (g - x_j) along
+ * the candidate's axis j, in round-to-nearest (for ps_frac). */
+/*@ requires ok: c.ok != 0 && pn_vok(c, l0, h0, l1, h1, l2, h2);
+    requires box: pn_bx(l0, h0, l1, h1, l2, h2);
+    requires b: \is_finite(b0) && \is_finite(b1) && \is_finite(b2)
+                && -PS_M <= b0 <= PS_M && -PS_M <= b1 <= PS_M && -PS_M <= b2 <= PS_M;
+    assigns \nothing;
+    ensures \is_finite(\result) && -PS_L <= \result <= PS_L;
+*/
+static double pn_rate(pn_vx c, double b0, double b1, double b2,
+                      double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    double x = c.j == 0 ? c.x0 : c.j == 1 ? c.x1 : c.x2;
+    double bj = c.j == 0 ? b0 : c.j == 1 ? b1 : b2;
+    (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
+    /*@ assert xr: -PS_M <= x <= PS_M && -PS_M <= c.g <= PS_M; */
+    return ps_mul(bj, ps_sub(c.g, x));
+}
+
 /* The witness point: the candidate's point moved the least fraction
- * (0, then 2^-60, 2^-56, ..., 1) toward its target for which W >= wn there
+ * (0, then the first guess of ps_frac or 2^-60 if larger, then 16 times
+ * the last, up to 1) toward its target for which W >= wn there
  * in interval arithmetic; ok 0 when none. */
 typedef struct pn_wp { pn_pt y; int ok; } pn_wp;
 
@@ -547,12 +570,17 @@ static pn_wp pn_witness(pn_vx c, double b0, double b1, double b2, double b3,
     for (k = 0; k < 17; k++) {
         pn_pt y = pn_nudge(c, frac, l0, h0, l1, h1, l2, h2);
         cbx_iv w = ps_e_at(0.0, b0, b1, b2, b3, b0, b1, b2, b3, y.y0, y.y1, y.y2);
+        double nx = frac == 0.0 ? 0x1p-60 : pn_between(cbx_mul_rn(frac, 16.0), 0.0, 1.0);
         if (w.lo >= wn) {
             r.y = y;
             r.ok = 1;
             break;
         }
-        frac = frac == 0.0 ? 0x1p-60 : pn_between(cbx_mul_rn(frac, 16.0), 0.0, 1.0);
+        if (frac == 0.0) {
+            double gs = ps_frac(w, wn, pn_rate(c, b0, b1, b2, l0, h0, l1, h1, l2, h2));
+            nx = gs > nx ? gs : nx;
+        }
+        frac = nx;
     }
     return r;
 }
@@ -572,9 +600,9 @@ static int pn_try(double th, double tl, int e, pn_pt y, double a0, double a1, do
                   double b0, double b1, double b2, double b3,
                   double l0, double h0, double l1, double h1, double l2, double h2, double wn)
 {
-    return pn_sound(th, e, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn)
-           && pn_wit(tl, y.y0, y.y1, y.y2, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn)
-           && ps_span(th, tl, th);
+    return ps_span(th, tl, th)
+           && pn_sound(th, e, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn)
+           && pn_wit(tl, y.y0, y.y1, y.y2, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
 }
 
 typedef struct pn_fin { double v, w; int ok; } pn_fin;
@@ -611,7 +639,8 @@ static pn_fin pn_find(pn_vx c, double a0, double a1, double a2, double a3,
     */
     for (k = 0; k < PN_TRIES && d <= 0x1p90 && y.ok != 0; k++) {
         double th = t0 + d;
-        double tl = t0 - d;
+        double tw = ps_sub(t0, ps_mul(d, 64.0));   /* the witness's room: only th is returned */
+        double tl = ps_in(th, PS_B) && ps_in(tw, PS_B) && ps_span(th, tw, th) ? tw : t0 - d;
         if (ps_in(th, PS_B) && ps_in(tl, PS_B)
             && pn_try(th, tl, c.e, y.y, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn)) {
             f.v = th;

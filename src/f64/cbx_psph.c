@@ -77,7 +77,7 @@ typedef struct ps_fin { double v, w; int ok; } ps_fin;
 
 /* One try of an end, at th = t0 + d and tl = t0 - d: the enclosure of
  * e(t) + |r| |k(t)| (up != 0: the upper end) or e(t) - |r| |k(t)| (up ==
- * 0: the lower end) at both.  1 when the end (th for up, tl for down) is
+ * 0: the lower end) at the end, then at the other point.  1 when the end (th for up, tl for down) is
  * sound, the other point shows tightness, and they are within ps_tau of
  * the end. */
 /*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
@@ -97,14 +97,20 @@ typedef struct ps_fin { double v, w; int ok; } ps_fin;
 static int ps_try(int up, double th, double tl, double a0, double a1, double a2, double a3,
                   double b0, double b1, double b2, double b3, double c0, double c1, double c2, double r)
 {
-    ps_gap gh = ps_gap_at(th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-    ps_gap gl = ps_gap_at(tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-    cbx_iv sh = iv_add(gh.e, up != 0 ? gh.k : iv_neg(gh.k));
-    cbx_iv sl = iv_add(gl.e, up != 0 ? gl.k : iv_neg(gl.k));
-    /* up: sound at th, tight at tl; down: sound at tl, tight at th */
-    int sound = up != 0 ? sh.hi <= 0.0 : sl.lo >= 0.0;
-    int tight = up != 0 ? sl.lo > 0.0 : sh.hi < 0.0;
-    return sound && tight && ps_span(th, tl, up != 0 ? th : tl);
+    int ok = 0;
+    /* up: sound at th, tight at tl; down: sound at tl, tight at th.  The
+     * span first, the tight side only where the end is sound (most tries
+     * fail on soundness: one enclosure instead of two). */
+    if (ps_span(th, tl, up != 0 ? th : tl)) {
+        ps_gap gs = ps_gap_at(up != 0 ? th : tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+        cbx_iv ss = iv_add(gs.e, up != 0 ? gs.k : iv_neg(gs.k));
+        if (up != 0 ? ss.hi <= 0.0 : ss.lo >= 0.0) {
+            ps_gap gw = ps_gap_at(up != 0 ? tl : th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+            cbx_iv sw = iv_add(gw.e, up != 0 ? gw.k : iv_neg(gw.k));
+            ok = up != 0 ? sw.lo > 0.0 : sw.hi < 0.0;
+        }
+    }
+    return ok;
 }
 
 /* One end from the candidate t0.  up != 0, the upper end: v = t0 + d with
