@@ -127,8 +127,8 @@ case_ qdot-term-widened src/f64/cbx_quat.h q_dot proofs/trs.c one,rng,p,srng,s,n
 # 17. a projected ball's upper end: the soundness check dropped (unsound:
 #    the end is no longer shown above the image)
 case_ psph-hi-unchecked src/f64/cbx_psph.c ps_try proofs/psph.c hi,lo ensures_hi \
-  "    int sound = up != 0 ? sh.hi <= 0.0 : sl.lo >= 0.0;" \
-  "    int sound = up != 0 ? 1 : sl.lo >= 0.0;" - &
+  "        if (up != 0 ? ss.hi <= 0.0 : ss.lo >= 0.0) {" \
+  "        if (up != 0 ? 1 : ss.lo >= 0.0) {" - &
 # 18. a projected ball's tightness: the span allowed twice as wide (still
 #    sound; the 2^-20 postcondition must fail)
 case_ psph-span-doubled src/f64/cbx_paff.h ps_span proofs/psph.c w,q,span ensures_span \
