@@ -1546,6 +1546,36 @@ void xu_ball_point(mpq_t x[3], const double c[3], double r, double u, double v, 
     mpq_clears(q, uq, vq, den, t, NULL);
 }
 
+void xu_dists_add(xu_dists *d, double u)
+{
+    if (d->n == d->cap) {
+        d->cap = d->cap ? 2 * d->cap : 1024;
+        d->v = realloc(d->v, (size_t)d->cap * sizeof *d->v);
+        if (!d->v)
+            abort();
+    }
+    d->v[d->n++] = u;
+    if (u > d->worst)
+        d->worst = u;
+}
+
+void xu_dists_print(FILE *f, xu_dists *d)
+{
+    if (d->n > 0) {
+        qsort(d->v, (size_t)d->n, sizeof *d->v, xu_cmp_double);
+        fprintf(f, "  distance of an end to the exact end, in units of 2^-52 (1 + |end|) (proven: at most 2^32):\n"
+                   "    median %.1f, 99th percentile %.1f, 99.9th %.1f, largest %.3g (%ld ends)\n",
+                d->v[d->n / 2], d->v[d->n * 99 / 100], d->v[d->n * 999 / 1000], d->worst, d->n);
+    }
+}
+
+void xu_dists_free(xu_dists *d)
+{
+    free(d->v);
+    d->v = NULL;
+    d->n = d->cap = 0;
+}
+
 int xu_cmp_double(const void *a, const void *b)
 {
     double x = *(const double *)a, y = *(const double *)b;

@@ -302,6 +302,12 @@ void xu_dot3_q(mpq_t q, const double u[4], const double v[4]);  /* u0 v0 + u1 v1
  * [0, 1] (x initialised by the caller) */
 void xu_ball_point(mpq_t x[3], const double c[3], double r, double u, double v, double s);
 int xu_cmp_double(const void *a, const void *b);
+/* Each end's distance to its exact end, in units of 2^-52 (1 + |end|), kept
+ * for a projective oracle's summary (zero-initialised: empty). */
+typedef struct xu_dists { double *v, worst; long n, cap; } xu_dists;
+void xu_dists_add(xu_dists *d, double u);
+void xu_dists_print(FILE *f, xu_dists *d);   /* median, 99th, 99.9th, largest (sorts d->v); nothing when empty */
+void xu_dists_free(xu_dists *d);
 
 /* ---- helpers for test_cbox, test_sphere and the demo (GMP only) --------
  * None of these calls the library, so test_exact / test_badinput still link

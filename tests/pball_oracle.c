@@ -35,19 +35,6 @@ static void check(int ok, const char *what)
     }
 }
 
-static void add_dist(double u)
-{
-    if (S->n_dist == S->cap_dist) {
-        S->cap_dist = S->cap_dist ? 2 * S->cap_dist : 1024;
-        S->dist = realloc(S->dist, (size_t)S->cap_dist * sizeof *S->dist);
-        if (!S->dist)
-            abort();
-    }
-    S->dist[S->n_dist++] = u;
-    if (u > S->worst)
-        S->worst = u;
-}
-
 /* ---- exact pieces ------------------------------------------------------------ */
 /* the row's value at the center */
 static void at_center(mpq_t v, const double a[4])
@@ -307,7 +294,7 @@ static void end_check(double end, const mpfr_t x, const mpfr_t m, int up)
         mpfr_sub_d(d, hi, end, MPFR_RNDU);  /* hi - end */
     }
     check(mpfr_cmp_d(d, tau * (1 - 0x1p-50)) <= 0, "each end within 2^-20 (1 + |end|) of the exact end");
-    add_dist(units(end, x));
+    xu_dists_add(&S->dist, units(end, x));
     mpfr_clears(lo, hi, d, (mpfr_ptr)0);
 }
 
@@ -473,17 +460,10 @@ void pbo_print(FILE *f, pbo_stats *s)
     fprintf(f, "  CBX_EMPTY in the domain (all behind the near plane, exactly): %ld\n", s->behind);
     fprintf(f, "  CBX_ERANGE in the domain: %ld (%ld with nothing in front, exactly); ends without a closed form (skipped): %ld\n",
             s->erange, s->erange_void, s->degenerate);
-    if (s->n_dist > 0) {
-        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, xu_cmp_double);
-        fprintf(f, "  distance of an end to the exact end, in units of 2^-52 (1 + |end|) (proven: at most 2^32):\n"
-                   "    median %.1f, 99th percentile %.1f, 99.9th %.1f, largest %.3g (%ld ends)\n",
-                s->dist[s->n_dist / 2], s->dist[s->n_dist * 99 / 100], s->dist[s->n_dist * 999 / 1000], s->worst, s->n_dist);
-    }
+    xu_dists_print(f, &s->dist);
 }
 
 void pbo_free(pbo_stats *s)
 {
-    free(s->dist);
-    s->dist = NULL;
-    s->n_dist = s->cap_dist = 0;
+    xu_dists_free(&s->dist);
 }

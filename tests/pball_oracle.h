@@ -46,15 +46,14 @@ typedef struct pbo_stats {
     long erange;                /* CBX_ERANGE in the domain */
     long erange_void;           /* of which with nothing in front, exactly */
     long degenerate;            /* OK cases whose end the closed form cannot give (skipped) */
-    double *dist, worst;        /* each end's distance to the exact end, units */
-    long n_dist, cap_dist;
+    xu_dists dist;              /* each end's distance to the exact end, units */
     uint64_t rng;               /* the random points' generator */
 } pbo_stats;
 
 void pbo_init(pbo_stats *s, uint64_t seed);
 void pbo_judge(const double p[4][4], const double c[3], double r, double wn, cbx_status st,
                const cbx_box *out, pbo_stats *s, void (*fail)(const char *what));
-void pbo_print(FILE *f, pbo_stats *s);   /* the summary lines (sorts s->dist) */
+void pbo_print(FILE *f, pbo_stats *s);   /* the summary lines (sorts s->dist.v) */
 void pbo_free(pbo_stats *s);
 
 #endif /* PBALL_ORACLE_H */

@@ -141,15 +141,7 @@ static void add_dist(pno_stats *s, double d)
             s->worst_wide = d;
         return;
     }
-    if (s->n_dist == s->cap_dist) {
-        s->cap_dist = s->cap_dist ? 2 * s->cap_dist : 4096;
-        s->dist = realloc(s->dist, (size_t)s->cap_dist * sizeof *s->dist);
-        if (!s->dist)
-            abort();
-    }
-    s->dist[s->n_dist++] = d;
-    if (d > s->worst)
-        s->worst = d;
+    xu_dists_add(&s->dist, d);
 }
 
 /* end against the exact end e: on the right side (up: end >= e), within
@@ -308,19 +300,12 @@ void pno_print(FILE *f, pno_stats *s)
             s->st[0], s->clipped, s->st[1], s->behind, s->st[2], s->st[3]);
     fprintf(f, "  with CBX_OK: every end against the exact end (GMP rationals over the clipped box's vertices), and %ld exact points\n", s->points);
     fprintf(f, "  CBX_ERANGE in the domain: %ld (%ld of them with nothing in front of the near plane)\n", s->erange, s->erange_void);
-    if (s->n_dist > 0) {
-        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, xu_cmp_double);
-        fprintf(f, "  distance of an end to the exact end, in units of 2^-52 (1 + |end|) (proven: at most 2^32):\n"
-                   "    median %.1f, 99th percentile %.1f, 99.9th %.1f, largest %.3g (%ld ends)\n",
-                s->dist[s->n_dist / 2], s->dist[s->n_dist * 99 / 100], s->dist[s->n_dist * 999 / 1000], s->worst, s->n_dist);
-    }
+    xu_dists_print(f, &s->dist);
     if (s->n_wide > 0)
         fprintf(f, "    with W's magnitude on the box above 2^20 wn: largest %.3g (%ld ends)\n", s->worst_wide, s->n_wide);
 }
 
 void pno_free(pno_stats *s)
 {
-    free(s->dist);
-    s->dist = NULL;
-    s->n_dist = s->cap_dist = 0;
+    xu_dists_free(&s->dist);
 }

@@ -34,8 +34,7 @@ typedef struct pno_stats {
     long points;                /* exact points checked */
     long erange;                /* CBX_ERANGE in the domain */
     long erange_void;           /* of which with nothing in front, exactly */
-    double *dist, worst;        /* each end's distance to the exact end, units */
-    long n_dist, cap_dist;
+    xu_dists dist;              /* each end's distance to the exact end, units */
     int wide;                   /* set by the caller: W's magnitude above 2^20 wn */
     double worst_wide;          /* the largest distance among those (kept apart) */
     long n_wide;
@@ -45,7 +44,7 @@ typedef struct pno_stats {
 void pno_init(pno_stats *s, uint64_t seed);
 void pno_judge(const double p[4][4], const cbx_box *in, double wn, cbx_status st, const cbx_box *out,
                pno_stats *s, void (*fail)(const char *what));
-void pno_print(FILE *f, pno_stats *s);   /* the summary lines (sorts s->dist) */
+void pno_print(FILE *f, pno_stats *s);   /* the summary lines (sorts s->dist.v) */
 void pno_free(pno_stats *s);
 
 #endif /* PNEAR_ORACLE_H */

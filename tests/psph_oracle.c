@@ -34,19 +34,6 @@ static void check(int ok, const char *what)
     }
 }
 
-static void add_dist(double u)
-{
-    if (S->n_dist == S->cap_dist) {
-        S->cap_dist = S->cap_dist ? 2 * S->cap_dist : 1024;
-        S->dist = realloc(S->dist, (size_t)S->cap_dist * sizeof *S->dist);
-        if (!S->dist)
-            abort();
-    }
-    S->dist[S->n_dist++] = u;
-    if (u > S->worst)
-        S->worst = u;
-}
-
 /* ---- exact pieces ---------------------------------------------------------- */
 /* sign of B - |r| |b| (B = W(c)), exactly: B > 0 and B^2 > r^2 |b|^2 */
 static int front_sign(const mpq_t B, const mpq_t r2, const mpq_t bb)
@@ -333,9 +320,9 @@ void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st,
                 check(mpfr_cmp_d(h0, o.hi[i]) <= 0, "hi >= the exact upper end");
                 check(within_tau(o.lo[i], l1) && within_tau(o.hi[i], h0), "each end within 2^-20 (1 + |end|) of the exact end");
                 u = units(o.lo[i], l1);
-                add_dist(u);
+                xu_dists_add(&S->dist, u);
                 u = units(o.hi[i], h0);
-                add_dist(u);
+                xu_dists_add(&S->dist, u);
                 pso_closed_form((const double (*)[4])P, C, R, i, &nl, &nh);
                 s->naive++;
                 if (!(mpfr_cmp_d(l1, nl) >= 0 && mpfr_cmp_d(h0, nh) <= 0))
@@ -391,18 +378,11 @@ void pso_print(FILE *f, pso_stats *s)
     fprintf(f, "  statuses: %ld CBX_OK, %ld CBX_EBEHIND, %ld CBX_ERANGE, %ld CBX_EINVAL\n", s->st[0], s->st[1], s->st[2], s->st[3]);
     fprintf(f, "  with CBX_OK: every end against its exact value (MPFR, %d bits), and %ld exact points of the balls\n", PREC, s->points);
     fprintf(f, "  CBX_ERANGE in the domain: %ld, the farthest from the camera plane at (min W) / (max W) = %.3g on the ball\n", s->erange, s->erange_front);
-    if (s->n_dist > 0) {
-        qsort(s->dist, (size_t)s->n_dist, sizeof *s->dist, xu_cmp_double);
-        fprintf(f, "  distance of an end to the exact end, in units of 2^-52 (1 + |end|) (proven: at most 2^32):\n"
-                   "    median %.1f, 99th percentile %.1f, 99.9th %.1f, largest %.3g (%ld ends)\n",
-                s->dist[s->n_dist / 2], s->dist[s->n_dist * 99 / 100], s->dist[s->n_dist * 999 / 1000], s->worst, s->n_dist);
-    }
+    xu_dists_print(f, &s->dist);
     fprintf(f, "  round-to-nearest closed form (shown, not asserted): %ld of %ld axes miss the exact image\n", s->naive_miss, s->naive);
 }
 
 void pso_free(pso_stats *s)
 {
-    free(s->dist);
-    s->dist = NULL;
-    s->n_dist = s->cap_dist = 0;
+    xu_dists_free(&s->dist);
 }

@@ -33,8 +33,7 @@ typedef struct pso_stats {
     long naive_miss, naive;     /* the round-to-nearest closed form */
     long erange;                /* CBX_ERANGE in the domain */
     double erange_front;        /* the largest min W / max W among them */
-    double *dist, worst;        /* each end's distance to the exact end, units */
-    long n_dist, cap_dist;
+    xu_dists dist;              /* each end's distance to the exact end, units */
     uint64_t rng;               /* the points' generator */
 } pso_stats;
 
@@ -46,7 +45,7 @@ void pso_print(FILE *f, pso_stats *s);
  * front of the camera), 0 when not, -1 when within 2^-300 of an end */
 /* the closed form in round to nearest (Mara and McGuire; unsound) */
 void pso_closed_form(const double p[4][4], const double c[3], double r, int i, double *lo, double *hi);
-int pso_contains(const double p[4][4], const double c[3], double r, int i, double lo, double hi);   /* the summary lines (sorts s->dist) */
+int pso_contains(const double p[4][4], const double c[3], double r, int i, double lo, double hi);   /* the summary lines (sorts s->dist.v) */
 void pso_free(pso_stats *s);
 
 #endif /* PSPH_ORACLE_H */

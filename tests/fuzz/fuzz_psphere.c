@@ -89,7 +89,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (S.rng == 0)
         pso_init(&S, 1);
     pso_judge((const double (*)[4])P, C, R, ST, &o, &S, on_fail);
-    if (S.n_dist > 4096) /* the distances are kept for the tests' summary only */
-        S.n_dist = 0;
+    if (S.dist.n > 4096) /* the distances are kept for the tests' summary only */
+        S.dist.n = 0;
     return 0;
 }
