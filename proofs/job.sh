@@ -189,12 +189,8 @@ case $name in
     # irow_in_terms in under 0.1 s where CVC4 times out, and a lemma job's
     # pass 2 regenerates every lemma (measured at 492e631: L64 54 s, L32
     # 40 s, each with that 20 s timeout and a second pass).
-    # Pass 1's provers see each task without the lemmas and definitions
-    # about none of its goal's logic (proofs/prune.py: measured 2026-11-29,
-    # 44% less prover time on the same goals); pass 2 gives them the whole
-    # context.
-    P1=cvc4p$fam
-    case $name in L*|PSR64) P1=cvc4p$fam,z3p$fam ;; esac
+    P1=cvc4r$fam
+    case $name in L*|PSR64) P1=cvc4r$fam,z3r$fam ;; esac
     # shellcheck disable=SC2086
     $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-40} $CACHE \
       > $out/wp-$name.log 2>&1 || true

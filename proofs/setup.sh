@@ -4,8 +4,6 @@
 # pair per floating-point family:
 #   cvc4r64, z3r64  CVC4 1.8 / Z3 4.8 for the binary64 jobs
 #   cvc4r32, z3r32  the same for the binary32 jobs
-#   cvc4p64, z3p64, cvc4p32, z3p32  the same behind proofs/prune.py (the
-#                   regular jobs' first pass)
 # (and cvc4r, z3r: the drivers without the per-family pruning below).
 # Each driver is Why3's own minus the floating-point theory mapping
 # (proofs/cvc4_real.drv.in, proofs/z3_real.drv.in), plus, per family, a list
@@ -85,12 +83,6 @@ CVC4CMD="$cvc4 --stats --tlimit=%t000 --lang=smt2 %f"
 CVC4STEPS="$cvc4 --stats --rlimit=%S --lang=smt2 %f"
 Z3CMD="$z3 -smt2 -T:%t sat.random_seed=42 nlsat.randomize=false smt.random_seed=42 -st %f"
 Z3STEPS="$z3 -smt2 sat.random_seed=42 nlsat.randomize=false smt.random_seed=42 -st rlimit=%S %f"
-# The regular passes' entries (cvc4p64, z3p64, ...): the same provers behind
-# proofs/prune.py, which deletes from each task the hypotheses about none of
-# the goal's own logic (see that file).  The interpreter is resolved here
-# (a version manager's shim costs 0.3 s a call: a third of a prover call).
-py=$(python3 -c 'import sys; print(sys.executable)')
-PRUNE="$py -S $here/prune.py"
 {
   cat <<CONF
 [main]
@@ -106,8 +98,6 @@ CONF
   for fam in 64 32; do
     entry CVC4 "$cvc4v" real$fam cvc4r$fam "$CVC4CMD" "$CVC4STEPS" "$out/cvc4_real$fam.drv"
     entry Z3 "$z3v" real$fam z3r$fam "$Z3CMD" "$Z3STEPS" "$out/z3_real$fam.drv"
-    entry CVC4 "$cvc4v" pruned$fam cvc4p$fam "$PRUNE $CVC4CMD" "$PRUNE $CVC4STEPS" "$out/cvc4_real$fam.drv"
-    entry Z3 "$z3v" pruned$fam z3p$fam "$PRUNE $Z3CMD" "$PRUNE $Z3STEPS" "$out/z3_real$fam.drv"
   done
 } > "$out/why3.conf"
 echo "$out/why3.conf"
