@@ -22,7 +22,8 @@
 #
 # Each harness (tests/fuzz/fuzz_<name>.c) is built with clang
 # -fsanitize=fuzzer,address,undefined, linking the library sources src/*/*.c
-# directly and tests/exact_util.c, into build/fuzz/; its seed corpus
+# directly and the oracles of scripts/testutil.sh (each compiled once into
+# an archive), into build/fuzz/; its seed corpus
 # (tests/fuzz/corpus/<name>/, written by tests/fuzz/make_corpus.c) is copied
 # to the scratch directory build/fuzz/run/<name>/corpus, which the run then
 # grows; crash reproducers go to build/fuzz/run/<name>/ (crash-*, ...), and
@@ -133,6 +134,18 @@ for f in src/*/*.c; do
     [ -f "$B/lib/$(echo "$f" | tr / _ | sed 's/\.c$/.o/')" ] || { echo "fuzz: build of $f failed" >&2; exit 1; }
 done
 ar rcs "$B/libcertbox-fuzz.a" "$B/lib/"*.o
+# the exact oracles (scripts/testutil.sh) likewise, once for all harnesses
+mkdir -p "$B/tu"
+rm -f "$B/tu/"*.o "$B/libtestutil-fuzz.a"
+for f in $(sh scripts/testutil.sh); do
+    # shellcheck disable=SC2086
+    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests -c "$f" -o "$B/tu/$(basename "$f" .c).o" &
+done
+wait
+for f in $(sh scripts/testutil.sh); do
+    [ -f "$B/tu/$(basename "$f" .c).o" ] || { echo "fuzz: build of $f failed" >&2; exit 1; }
+done
+ar rcs "$B/libtestutil-fuzz.a" "$B/tu/"*.o
 for h in $HARNESSES; do
     if [ "$h" = gltf ]; then
         if [ $HAVE_JANSSON = 0 ]; then
@@ -150,7 +163,7 @@ for h in $HARNESSES; do
     fi
     echo "fuzz: building $B/fuzz_$h" >&2
     # shellcheck disable=SC2086
-    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" $(sh scripts/testutil.sh) \
+    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests "tests/fuzz/fuzz_$h.c" "$B/libtestutil-fuzz.a" \
         "$B/libcertbox-fuzz.a" -lmpfr -lgmp -lm -o "$B/fuzz_$h" || { echo "fuzz: build of fuzz_$h failed" >&2; exit 1; }
 done
 
