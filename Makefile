@@ -48,6 +48,8 @@ ALLCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) $(INC)
 # programs that use the library as a client would: the public header alone
 PUBCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(CFLAGS) -Iinclude
 SANFLAGS  := -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+# the library, its oracles and its tests under ASan/UBSan
+SANCFLAGS := -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC)
 
 B := build
 # binary64 sources; the *_f.c files instantiate the same sources for binary32
@@ -81,7 +83,7 @@ $(B)/pic/%.o: src/%.c $(HEADERS)
 # the library once more under ASan/UBSan, linked by every sanitizer test
 $(B)/san/obj/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -c $< -o $@
+	$(CC) $(SANCFLAGS) -c $< -o $@
 
 $(B)/libcertbox.a: $(LIBOBJ)
 	rm -f $@ && ar rcs $@ $^
@@ -112,7 +114,7 @@ $(B)/tu/%.o: tests/%.c $(TESTHDR) $(HEADERS)
 	$(CC) $(ALLCFLAGS) -Itests -c $< -o $@
 $(B)/san/tu/%.o: tests/%.c $(TESTHDR) $(HEADERS)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itests -c $< -o $@
+	$(CC) $(SANCFLAGS) -Itests -c $< -o $@
 $(TU): $(TESTUTIL:tests/%.c=$(B)/tu/%.o)
 	rm -f $@ && ar rcs $@ $^
 $(SANTU): $(TESTUTIL:tests/%.c=$(B)/san/tu/%.o)
@@ -151,12 +153,12 @@ $(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) $(TU) $(TESTHDR) $(GLTFSRC) tool
 $(B)/san/test_gltf: tests/test_gltf.c $(GLTFORACLE) $(SANTU) $(TESTHDR) $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/san/libcertbox.a $(HEADERS)
 	$(NEED_JANSSON)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(TOOL_CFLAGS) $(INC) -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(SANTU) $(B)/san/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
+	$(CC) $(SANCFLAGS) $(TOOL_CFLAGS) -Itools/certbox -Itests $< $(GLTFORACLE) $(GLTFSRC) $(SANTU) $(B)/san/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@
 $(B)/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(TU) $(B)/libcertbox.a $(TESTHDR)
 	$(CC) $(PUBCFLAGS) -Itests -Itools/certbox $< $(SCENESRC) $(TU) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/san/test_scene: tests/test_scene.c $(SCENESRC) tools/certbox/scene.h tools/certbox/readall.h $(SANTU) $(B)/san/libcertbox.a $(HEADERS) $(TESTHDR)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itools/certbox -Itests $< $(SCENESRC) $(SANTU) $(B)/san/libcertbox.a -lmpfr -lgmp -lm -o $@
+	$(CC) $(SANCFLAGS) -Itools/certbox -Itests $< $(SCENESRC) $(SANTU) $(B)/san/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/test_%: tests/test_%.c $(TU) $(B)/libcertbox.a $(TESTHDR)
 	$(CC) $(ALLCFLAGS) -Itests $< $(TU) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 # the tight mode with the fma-free two_prod (Dekker's product, src/core/cbx_eft.h)
@@ -164,7 +166,7 @@ $(B)/test_tight_nofma: tests/test_tight.c $(TU) $(LIBSRC) $(HEADERS) $(TESTHDR)
 	$(CC) $(ALLCFLAGS) -DCBX_NO_FMA -Itests $< $(LIBSRC) $(TU) -lmpfr -lgmp -lm -o $@
 $(B)/san/test_%: tests/test_%.c $(SANTU) $(B)/san/libcertbox.a $(HEADERS) $(TESTHDR)
 	@mkdir -p $(@D)
-	$(CC) -std=c99 $(WARN) $(IEEEFLAGS) $(SANFLAGS) $(INC) -Itests $< $(SANTU) $(B)/san/libcertbox.a -lmpfr -lgmp -lm -o $@
+	$(CC) $(SANCFLAGS) -Itests $< $(SANTU) $(B)/san/libcertbox.a -lmpfr -lgmp -lm -o $@
 
 demo: check-deps-test
 	$(MAKE) $(B)/demo $(B)/certbox

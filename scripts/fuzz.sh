@@ -121,31 +121,27 @@ pkg-config --exists jansson 2>/dev/null && HAVE_JANSSON=1
 SKIPPED=""
 # The library's sources, compiled once with the harnesses' flags and linked
 # into each (each harness used to recompile all of src/: 9 of them took
-# most of the phase's minutes; an object archive of this one build does not).
-mkdir -p "$B/lib"
-rm -f "$B/lib/"*.o "$B/libcertbox-fuzz.a"
-for f in src/*/*.c; do
-    o="$B/lib/$(echo "$f" | tr / _ | sed 's/\.c$/.o/')"
-    # shellcheck disable=SC2086
-    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -c "$f" -o "$o" &
-done
-wait
-for f in src/*/*.c; do
-    [ -f "$B/lib/$(echo "$f" | tr / _ | sed 's/\.c$/.o/')" ] || { echo "fuzz: build of $f failed" >&2; exit 1; }
-done
-ar rcs "$B/libcertbox-fuzz.a" "$B/lib/"*.o
-# the exact oracles (scripts/testutil.sh) likewise, once for all harnesses
-mkdir -p "$B/tu"
-rm -f "$B/tu/"*.o "$B/libtestutil-fuzz.a"
-for f in $(sh scripts/testutil.sh); do
-    # shellcheck disable=SC2086
-    $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) -Itests -c "$f" -o "$B/tu/$(basename "$f" .c).o" &
-done
-wait
-for f in $(sh scripts/testutil.sh); do
-    [ -f "$B/tu/$(basename "$f" .c).o" ] || { echo "fuzz: build of $f failed" >&2; exit 1; }
-done
-ar rcs "$B/libtestutil-fuzz.a" "$B/tu/"*.o
+# most of the phase's minutes; an object archive of this one build does not),
+# and the exact oracles of scripts/testutil.sh likewise.
+# archive ARCHIVE DIR EXTRA SOURCE...: every source compiled at once into
+# DIR (with the extra flags EXTRA), then archived
+archive() {
+    a=$1; d=$2; x=$3; shift 3
+    mkdir -p "$d"
+    rm -f "$d/"*.o "$a"
+    for f in "$@"; do
+        # shellcheck disable=SC2086
+        $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) $x -c "$f" -o "$d/$(echo "$f" | tr / _ | sed 's/\.c$/.o/')" &
+    done
+    wait
+    for f in "$@"; do
+        [ -f "$d/$(echo "$f" | tr / _ | sed 's/\.c$/.o/')" ] || { echo "fuzz: build of $f failed" >&2; return 1; }
+    done
+    ar rcs "$a" "$d/"*.o
+}
+archive "$B/libcertbox-fuzz.a" "$B/lib" "" src/*/*.c || exit 1
+# shellcheck disable=SC2046
+archive "$B/libtestutil-fuzz.a" "$B/tu" -Itests $(sh scripts/testutil.sh) || exit 1
 for h in $HARNESSES; do
     if [ "$h" = gltf ]; then
         if [ $HAVE_JANSSON = 0 ]; then
