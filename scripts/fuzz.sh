@@ -130,7 +130,7 @@ archive() {
     mkdir -p "$d"
     rm -f "$d/"*.o "$a"
     for f in "$@"; do
-        # shellcheck disable=SC2086
+        # shellcheck disable=SC2046,SC2086
         $NICE "$CLANG" $CFLAGS $(sh scripts/incs.sh) $x -c "$f" -o "$d/$(echo "$f" | tr / _ | sed 's/\.c$/.o/')" &
     done
     wait
