@@ -35,6 +35,14 @@
     predicate ps_ctr(real c0, real c1, real c2, real r) =
       -0x1p60 <= c0 <= 0x1p60 && -0x1p60 <= c1 <= 0x1p60 && -0x1p60 <= c2 <= 0x1p60
       && -0x1p60 <= r <= 0x1p60;
+    // the arguments of an axis's computation: the rows a (X) and b (W) and
+    // the ball, finite and in the domain
+    predicate ps_args(double a0, double a1, double a2, double a3, double b0, double b1, double b2, double b3,
+                      double c0, double c1, double c2, double r) =
+      \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+      && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+      && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r)
+      && ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3) && ps_ctr(c0, c1, c2, r);
     predicate ps_fin(cbx_proj *p, double *c, double r) =
          \is_finite(p->m[0][0]) && \is_finite(p->m[0][1]) && \is_finite(p->m[0][2]) && \is_finite(p->m[0][3])
       && \is_finite(p->m[1][0]) && \is_finite(p->m[1][1]) && \is_finite(p->m[1][2]) && \is_finite(p->m[1][3])

@@ -56,15 +56,9 @@
 
 /* The arguments of an axis's computation: the rows a (X) and b (W), the
  * ball and the near plane, finite and in the domain. */
-/*@ predicate pb_ball(double a0, double a1, double a2, double a3, double b0, double b1, double b2, double b3,
-                      double c0, double c1, double c2, double r) =
-      \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
-      && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
-      && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r)
-      && ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3) && ps_ctr(c0, c1, c2, r);
-    predicate pb_args(double a0, double a1, double a2, double a3, double b0, double b1, double b2, double b3,
+/*@ predicate pb_args(double a0, double a1, double a2, double a3, double b0, double b1, double b2, double b3,
                       double c0, double c1, double c2, double r, double wn) =
-      pb_ball(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r) && \is_finite(wn) && pn_wn(wn);
+      ps_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r) && \is_finite(wn) && pn_wn(wn);
 */
 
 /* ---- input checks ----------------------------------------------------- */
@@ -127,7 +121,7 @@ static int pb_cert(double t, double s, double a0, double a1, double a2, double a
 /* ---- the witness: a point c + r q ------------------------------------- */
 /* X - t W at c + r q (pb_v), enclosed: its value at c plus r times its
  * linear part at q. */
-/*@ requires args: pb_ball(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+/*@ requires args: ps_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     requires q: \is_finite(q0) && \is_finite(q1) && \is_finite(q2)
                 && -1 <= q0 <= 1 && -1 <= q1 <= 1 && -1 <= q2 <= 1;
     requires t: \is_finite(t) && -PS_B <= t <= PS_B;

@@ -80,11 +80,7 @@ typedef struct ps_fin { double v, w; int ok; } ps_fin;
  * 0: the lower end) at the end, then at the other point.  1 when the end (th for up, tl for down) is
  * sound, the other point shows tightness, and they are within ps_tau of
  * the end. */
-/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
-    requires ctr: ps_ctr(c0, c1, c2, r);
-    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
-                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
-                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+/*@ requires args: ps_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     requires t: \is_finite(th) && \is_finite(tl) && -PS_B <= th <= PS_B && -PS_B <= tl <= PS_B;
     assigns \nothing;
     ensures hi: up != 0 && \result != 0 ==>
@@ -118,11 +114,7 @@ static int ps_try(int up, double th, double tl, double a0, double a1, double a2,
  * v - w <= ps_tau(v).  up == 0, the lower end: v = t0 - d with X >= v W
  * on the whole ball, w = t0 + d with some point below w, w - v <=
  * ps_tau(v).  d grows by 4 per try (ps_try). */
-/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
-    requires ctr: ps_ctr(c0, c1, c2, r);
-    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
-                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
-                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+/*@ requires args: ps_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     requires t0: \is_finite(t0) && -PS_C <= t0 <= PS_C;
     assigns \nothing;
     ensures fin: \result.ok != 0 ==> \is_finite(\result.v) && -PS_B <= \result.v <= PS_B;
@@ -168,11 +160,7 @@ static ps_fin ps_find(int up, double t0, double a0, double a1, double a2, double
 
 /* ---- one output axis ---------------------------------------------------- */
 
-/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
-    requires ctr: ps_ctr(c0, c1, c2, r);
-    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
-                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
-                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+/*@ requires args: ps_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     requires front: ps_front(b0, b1, b2, b3, c0, c1, c2, r);
     assigns \nothing;
     ensures ok: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
@@ -204,10 +192,7 @@ static ps_ax ps_axis_of(double a0, double a1, double a2, double a3,
 
 /* W > 0 on the whole ball (ps_front): e(0) - |r| |k(0)| of the row W
  * itself (a = b = W: X - 0 W is W) enclosed above 0. */
-/*@ requires row: ps_row(b0, b1, b2, b3);
-    requires ctr: ps_ctr(c0, c1, c2, r);
-    requires fin: \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
-                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+/*@ requires args: ps_args(b0, b1, b2, b3, b0, b1, b2, b3, c0, c1, c2, r);
     assigns \nothing;
     ensures front: \result != 0 ==> ps_front(b0, b1, b2, b3, c0, c1, c2, r);
 */
