@@ -439,7 +439,9 @@ BENCHSMOKEARGS := -n 2000 -r 11 -calls 10000 -exact 2000 -gmp 200 -cache 500 -bi
 BENCHNATIVE    := -O3 -march=native
 NATIVECFLAGS   := -std=c99 $(WARN) $(IEEEFLAGS) $(BENCHNATIVE) $(INC)
 NATIVEOBJ      := $(LIBSRC:src/%.c=$(B)/native/obj/%.o)
-BENCHSRC       := bench/bench.c bench/bench_ref.h $(TESTUTIL) tests/exact_util.h
+# the bench links the exact oracles only, not the tests' parts
+BENCHORACLES   := $(shell sh scripts/testutil.sh --oracles)
+BENCHSRC       := bench/bench.c bench/bench_ref.h $(BENCHORACLES) tests/exact_util.h
 .PHONY: bench bench-smoke branchfree
 $(foreach f,$(FAMSRC),$(eval $(B)/native/obj/f32/$(f)_f.o: $(call famof,$(f))))
 $(B)/native/obj/%.o: src/%.c $(HEADERS)
@@ -449,10 +451,10 @@ $(B)/native/libcertbox.a: $(NATIVEOBJ)
 	rm -f $@ && ar rcs $@ $^
 $(B)/bench: $(BENCHSRC) $(B)/libcertbox.a
 	$(CC) $(ALLCFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(ALLCFLAGS)"' \
-	  -DBENCH_LABEL='"$(strip $(CFLAGS))"' bench/bench.c $(TESTUTIL) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
+	  -DBENCH_LABEL='"$(strip $(CFLAGS))"' bench/bench.c $(BENCHORACLES) $(B)/libcertbox.a -lmpfr -lgmp -lm -o $@
 $(B)/bench-native: $(BENCHSRC) $(B)/native/libcertbox.a
 	$(CC) $(NATIVECFLAGS) -Itests -DBENCH_CC='"$(CC)"' -DBENCH_FLAGS='"$(NATIVECFLAGS)"' \
-	  -DBENCH_LABEL='"$(BENCHNATIVE)"' bench/bench.c $(TESTUTIL) $(B)/native/libcertbox.a -lmpfr -lgmp -lm -o $@
+	  -DBENCH_LABEL='"$(BENCHNATIVE)"' bench/bench.c $(BENCHORACLES) $(B)/native/libcertbox.a -lmpfr -lgmp -lm -o $@
 
 # BENCH_RUN(dir, args): both builds, one after the other, then the merged table
 BENCH_RUN = ./$(B)/bench $(2) -o $(1)/O2 && ./$(B)/bench-native $(2) -o $(1)/native && \

@@ -298,13 +298,17 @@ def coverage(raw, b):
             sh([CC] + FLAGS + ['-O0', '-DCBX_GLTF'] + jansson_flags('--cflags')
                + [*INCS, '-Itools/certbox', '-Itests', '-c', s, '-o', o])
             gltf.append(o)
-    # the exact oracles, compiled once (not measured: only src/ and include/
-    # are, from the library's objects)
+    # the exact oracles and the tests' parts, compiled once into an archive
+    # (not measured: only src/ and include/ are, from the library's
+    # objects); a test links the members it uses, as with make's archive
     tu = []
     for s in TESTUTIL:
         o = os.path.join(b, 'tu_' + os.path.basename(s)[:-2] + '.o')
         sh([CC] + FLAGS + ['-O0', *INCS, '-Itests', '-c', s, '-o', o])
         tu.append(o)
+    tua = os.path.join(b, 'libtestutil.a')
+    sh(['ar', 'rcs', tua] + tu)
+    tu = [tua]
     for i, (name, args) in enumerate(SUITES):
         exe = os.path.join(b, 'test_' + name)
         if name == 'gltf' and not HAVE_JANSSON:

@@ -122,7 +122,8 @@ SKIPPED=""
 # The library's sources, compiled once with the harnesses' flags and linked
 # into each (each harness used to recompile all of src/: 9 of them took
 # most of the phase's minutes; an object archive of this one build does not),
-# and the exact oracles of scripts/testutil.sh likewise.
+# and the exact oracles of scripts/testutil.sh likewise (--oracles: not the
+# tests' parts).
 # archive ARCHIVE DIR EXTRA SOURCE...: every source compiled at once into
 # DIR (with the extra flags EXTRA), then archived
 archive() {
@@ -141,7 +142,7 @@ archive() {
 }
 archive "$B/libcertbox-fuzz.a" "$B/lib" "" src/*/*.c || exit 1
 # shellcheck disable=SC2046
-archive "$B/libtestutil-fuzz.a" "$B/tu" -Itests $(sh scripts/testutil.sh) || exit 1
+archive "$B/libtestutil-fuzz.a" "$B/tu" -Itests $(sh scripts/testutil.sh --oracles) || exit 1
 for h in $HARNESSES; do
     if [ "$h" = gltf ]; then
         if [ $HAVE_JANSSON = 0 ]; then
