@@ -16,4 +16,6 @@ echo "$ORACLES" \
      "tests/sphere_check.c tests/sphere_oracle.c tests/sphere_cases.c" \
      "tests/float_util.c tests/float_box.c tests/float_cbox.c tests/float_ball.c" \
      "tests/imat_check.c tests/imat_gen.c tests/imat_teeth.c" \
-     "tests/special_cases.c tests/special_check.c tests/special_oracle.c"
+     "tests/special_cases.c tests/special_check.c tests/special_oracle.c" \
+     "tests/chain_exact.c tests/chain_cases.c" \
+     "tests/batch_gen.c tests/batch_check.c"
