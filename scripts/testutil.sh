@@ -18,4 +18,5 @@ echo "$ORACLES" \
      "tests/imat_check.c tests/imat_gen.c tests/imat_teeth.c" \
      "tests/special_cases.c tests/special_check.c tests/special_oracle.c" \
      "tests/chain_exact.c tests/chain_cases.c" \
-     "tests/batch_gen.c tests/batch_check.c"
+     "tests/batch_gen.c tests/batch_check.c" \
+     "tests/trs_exact.c tests/trs_gen.c tests/trs_special.c"
