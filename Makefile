@@ -441,7 +441,7 @@ NATIVECFLAGS   := -std=c99 $(WARN) $(IEEEFLAGS) $(BENCHNATIVE) $(INC)
 NATIVEOBJ      := $(LIBSRC:src/%.c=$(B)/native/obj/%.o)
 # the bench links the exact oracles only, not the tests' parts
 BENCHORACLES   := $(shell sh scripts/testutil.sh --oracles)
-BENCHSRC       := bench/bench.c bench/bench_ref.h $(BENCHORACLES) tests/exact_util.h
+BENCHSRC       := bench/bench.c bench/bench_ref.h $(BENCHORACLES) tests/exact_util.h tests/exact_internal.h
 .PHONY: bench bench-smoke branchfree
 $(foreach f,$(FAMSRC),$(eval $(B)/native/obj/f32/$(f)_f.o: $(call famof,$(f))))
 $(B)/native/obj/%.o: src/%.c $(HEADERS)

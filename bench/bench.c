@@ -80,7 +80,7 @@
  *   6b  sphere by Arvo: cbx_transform_box of [-1,1]^3 under the same maps
  *       (sound, but the box of a rotated box); the notes give the mean of
  *       vol(6b) / vol(6a) over the exact subset.
- *   7   GMP exact: xu_row_bounds (tests/exact_util.c) for the 3 rows of
+ *   7   GMP exact: xu_row_bounds (tests/exact_fixed.c) for the 3 rows of
  *       each of the first NG cases.
  *   S-A, S, Sc   scene: NS instances (default NB / 4), each with its own
  *       map and box, in random order, with a mix of transform classes: 20%

@@ -6,7 +6,8 @@
 # then the parts of the longer tests, whose drivers (tests/test_NAME.c:
 # main, the arguments, the order of the suites, the summary) declare them
 # through tests/NAME_parts.h.
-ORACLES="tests/exact_util.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c"
+ORACLES="tests/exact_domain.c tests/exact_fixed.c tests/exact_check.c tests/exact_stats.c"
+ORACLES="$ORACLES tests/exact_gen.c tests/exact_slerp.c tests/exact_proj.c tests/proj_oracle.c tests/psph_oracle.c tests/pnear_oracle.c tests/pball_oracle.c tests/proj_cases.c"
 if [ "${1:-}" = --oracles ]; then echo "$ORACLES"; exit 0; fi
 echo "$ORACLES" \
      "tests/cbox_check.c tests/cbox_conv.c tests/cbox_cases.c tests/cbox_random.c" \

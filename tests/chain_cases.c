@@ -60,7 +60,7 @@ void cht_random_box(xu_rng *r, int chain, cbx_box *b)
     int j;
     for (j = 0; j < 3; j++) {
         double c = (2 * xu_rng_unit(r) - 1) * 8;
-        int e = xu_rng_int(r, -3, 2); /* drawn first (argument order: see exact_util.c) */
+        int e = xu_rng_int(r, -3, 2); /* drawn first (argument order: see exact_gen.c) */
         double h = ldexp(1 + xu_rng_unit(r), e);
         if (j == 2 && chain % 5 == 4) h = 0;
         b->lo[j] = c - h;

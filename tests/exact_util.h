@@ -39,6 +39,18 @@
  *   (C) an infinite m_j or t: the whole line [-inf, +inf], a loss ("W").
  * Status CBX_OK iff no axis has a loss, else CBX_ERANGE.  A box end
  * lo = +inf or hi = -inf (or hi < lo) has no real point: CBX_EMPTY.
+ *
+ * The oracle's files (all in scripts/testutil.sh --oracles; the helpers
+ * they share among themselves are in exact_internal.h, not here):
+ *   exact_domain.c  the formats, the domain and the expected statuses
+ *                   (transform_box and transform_cbox rules)
+ *   exact_fixed.c   exact bounds: the fixed-point and mpq corner paths, and
+ *                   the GMP helpers of test_cbox, test_sphere and the demo
+ *   exact_check.c   checking one call (xu_check_result, xu_run_case)
+ *   exact_stats.c   statistics, printing, class values, xu_arg_num
+ *   exact_gen.c     the random generator and the random cases
+ *   exact_slerp.c   the slerp oracle
+ *   exact_proj.c    helpers shared by the projective oracles
  */
 #ifndef EXACT_UTIL_H
 #define EXACT_UTIL_H
