@@ -145,8 +145,10 @@ NEED_JANSSON = @[ "$(HAVE_JANSSON)" = 1 ] || { echo "$@: needs jansson (libjanss
 $(B)/certbox: tools/certbox/main.c $(SCENESRC) $(GLTFSRC) tools/certbox/scene.h tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a $(TOOL_STAMP)
 	@[ "$(HAVE_JANSSON)" = 1 ] || echo "$@: note: jansson (libjansson-dev) not found: the tool is built without glTF input" >&2
 	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) tools/certbox/main.c $(SCENESRC) $(GLTFSRC) $(B)/libcertbox.a $(TOOL_LIBS) -lm -o $@
-# the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c)
-GLTFORACLE   := tests/gltf_oracle.c
+# the exact oracle of test_gltf, shared with the fuzz harness (tests/fuzz/fuzz_gltf.c),
+# and test_gltf's --animated checks (tests/gltf_anim.c: test_gltf only); both
+# need the tool's headers and jansson, so they are not in $(TU)
+GLTFORACLE   := tests/gltf_oracle.c tests/gltf_anim.c
 $(B)/test_gltf: tests/test_gltf.c $(GLTFORACLE) $(TU) $(TESTHDR) $(GLTFSRC) tools/certbox/gltf.h tools/certbox/readall.h $(B)/libcertbox.a
 	$(NEED_JANSSON)
 	$(CC) $(PUBCFLAGS) $(TOOL_CFLAGS) -Itests -Itools/certbox $< $(GLTFORACLE) $(GLTFSRC) $(TU) $(B)/libcertbox.a $(TOOL_LIBS) -lmpfr -lgmp -lm -o $@

@@ -43,7 +43,7 @@ suite() {
   if [ "$name" = gltf ]; then
     G="-DCBX_GLTF -Itools/certbox"
     # shellcheck disable=SC2086
-    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c tools/certbox/gltf.c $B/libtestutil.a $lib -static -ljansson -lmpfr -lgmp -lm -o $B/test_gltf
+    $XCC $F $G tests/test_gltf.c tests/gltf_oracle.c tests/gltf_anim.c tools/certbox/gltf.c $B/libtestutil.a $lib -static -ljansson -lmpfr -lgmp -lm -o $B/test_gltf
     # shellcheck disable=SC2086
     $XCC $F $G tools/certbox/main.c tools/certbox/scene.c tools/certbox/gltf.c $lib -static -ljansson -lm -o $B/certbox
     ./build/test_gltf $GLTFDIR tests/data/gltf build/certbox "$GLTF_N" > $B/$name.host.txt 2>&1 || true

@@ -291,9 +291,10 @@ def coverage(raw, b):
     same = []
     gltf = []
     if HAVE_JANSSON:
-        # the glTF reader and test_gltf's oracle (not measured: tools/certbox is
+        # the glTF reader, test_gltf's oracle and --animated checks (not measured: tools/certbox is
         # left out below, like scene.c)
-        for s, o in [('tools/certbox/gltf.c', 'gltf.o'), ('tests/gltf_oracle.c', 'gltf_oracle.o')]:
+        for s, o in [('tools/certbox/gltf.c', 'gltf.o'), ('tests/gltf_oracle.c', 'gltf_oracle.o'),
+                     ('tests/gltf_anim.c', 'gltf_anim.o')]:
             o = os.path.join(b, 'obj', o)
             sh([CC] + FLAGS + ['-O0', '-DCBX_GLTF'] + jansson_flags('--cflags')
                + [*INCS, '-Itools/certbox', '-Itests', '-c', s, '-o', o])

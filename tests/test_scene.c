@@ -13,6 +13,10 @@
  * Then the error handling: broken scenes must be rejected with the right
  * line number, and the printed %.17g values must parse back exactly.
  * Exit 1 on any failure.
+ * This file is the driver (the checks that need the tool's scene.h, main,
+ * the order of the suites, the summary); its parts are scene_exact.c (the
+ * exact maps) and scene_gen.c (the generated scenes), declared in
+ * scene_parts.h and built into build/libtestutil.a.
  */
 #include <gmp.h>
 #include <mpfr.h>
@@ -23,75 +27,7 @@
 #include <string.h>
 #include "scene.h"
 #include "exact_util.h"
-
-typedef struct qmap { mpq_t m[3][4]; } qmap;   /* y = M x + T, exact */
-
-static void qm_init(qmap *q)
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            mpq_init(q->m[i][j]);
-}
-static void qm_clear(qmap *q)
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            mpq_clear(q->m[i][j]);
-}
-static void qm_ident(qmap *q)
-{
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            mpq_set_si(q->m[i][j], i == j, 1);
-}
-/* q = (1 - s) a0 + s a1, exactly (s = 0: a0) */
-static void qm_from(qmap *q, const cbx_affine *a0, const cbx_affine *a1, const mpq_t s)
-{
-    mpq_t x, y, one_s;
-    mpq_inits(x, y, one_s, NULL);
-    mpq_set_ui(one_s, 1, 1);
-    mpq_sub(one_s, one_s, s);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++) {
-            mpq_set_d(x, a0->m[i][j]);
-            mpq_mul(q->m[i][j], x, one_s);
-            if (a1) {
-                mpq_set_d(y, a1->m[i][j]);
-                mpq_mul(y, y, s);
-                mpq_add(q->m[i][j], q->m[i][j], y);
-            }
-        }
-    mpq_clears(x, y, one_s, NULL);
-}
-/* r = a o b (apply b first); r may not alias a or b */
-static void qm_compose(qmap *r, const qmap *a, const qmap *b)
-{
-    mpq_t t;
-    mpq_init(t);
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++) {
-            mpq_set_ui(r->m[i][j], 0, 1);
-            for (int k = 0; k < 3; k++) {
-                mpq_mul(t, a->m[i][k], b->m[k][j]);
-                mpq_add(r->m[i][j], r->m[i][j], t);
-            }
-            if (j == 3)
-                mpq_add(r->m[i][j], r->m[i][j], a->m[i][3]);
-        }
-    mpq_clear(t);
-}
-
-typedef struct stats { long leaves, checks, fails, ratios_n, ratios_cap; double *ratios; } stats;
-
-static void add_ratio(stats *st, double r)
-{
-    if (st->ratios_n == st->ratios_cap) {
-        st->ratios_cap = st->ratios_cap ? 2 * st->ratios_cap : 256;
-        st->ratios = realloc(st->ratios, (size_t)st->ratios_cap * sizeof *st->ratios);
-        if (!st->ratios) { fprintf(stderr, "out of memory\n"); exit(2); }
-    }
-    st->ratios[st->ratios_n++] = r;
-}
+#include "scene_parts.h"
 
 /* Check one leaf under the exact world map W. */
 static void check_leaf(const sc_leaf *L, const qmap *W, stats *st, const char *file, int tight)
@@ -122,7 +58,7 @@ static void check_leaf(const sc_leaf *L, const qmap *W, stats *st, const char *f
                 if (vd > emax) emax = vd;
             }
             if (tight && lofin && hifin && emax > emin)
-                add_ratio(st, (L->world.hi[i] - L->world.lo[i]) / (emax - emin));
+                sct_add_ratio(st, (L->world.hi[i] - L->world.lo[i]) / (emax - emin));
         } else {
             /* A = W_lin R diag(r); c' = W c + T */
             double r[3], R[3][3];
@@ -177,103 +113,39 @@ static void check_leaf(const sc_leaf *L, const qmap *W, stats *st, const char *f
             }
             double ew = 2.0 * sqrt(mpq_get_d(sum));
             if (tight && lofin && hifin && ew > 0)
-                add_ratio(st, (L->world.hi[i] - L->world.lo[i]) / ew);
+                sct_add_ratio(st, (L->world.hi[i] - L->world.lo[i]) / ew);
         }
     }
     mpq_clears(v, t, lo, hi, d, sum, NULL);
 }
 
-/* A keyframes node's map at time tm: T(tm) + R(tm) diag(S(tm)), T and S
- * exact; R from slerp (or nlerp) of the normalised quaternions, q1 negated
- * when the exact q0.q1 < 0, evaluated with MPFR at 300 bits and taken as
- * the rational of that value (within 2^-290 of the real rotation: far
- * below any rounding the tool's bound must cover). */
-static void trs_map(const cbx_trs *k0, const cbx_trs *k1, int nlerp, const mpq_t tm, qmap *out)
-{
-    mpfr_t q[4], d, t, x;
-    mpq_t one_m, sq, tq;
-    xu_slerp sl;
-    int i, j;
-    mpfr_inits2(300, d, t, x, (mpfr_ptr)0);
-    for (i = 0; i < 4; i++) mpfr_init2(q[i], 300);
-    mpq_inits(one_m, sq, tq, NULL);
-    xu_slerp_init(&sl, 300);
-    xu_slerp_keys(&sl, k0->q, k1->q, nlerp, 0);
-    mpfr_set_q(t, tm, MPFR_RNDN);
-    xu_slerp_at(&sl, t, q);
-    xu_slerp_clear(&sl);
-    /* R (unit quaternion (x, y, z, w)), then the columns scaled by S */
-    {
-        static const int sq_a[3][2] = {{1, 2}, {0, 2}, {0, 1}};
-        /* off-diagonal: 2 (q_u q_v + sign q_w q_z) */
-        static const int off[3][3][4] = {
-            {{0, 0, 0, 0}, {0, 1, 2, -1}, {0, 2, 1, 1}},
-            {{0, 1, 2, 1}, {0, 0, 0, 0}, {1, 2, 0, -1}},
-            {{0, 2, 1, -1}, {1, 2, 0, 1}, {0, 0, 0, 0}}};
-        mpq_set_ui(one_m, 1, 1);
-        mpq_sub(one_m, one_m, tm);
-        for (i = 0; i < 3; i++) {
-            for (j = 0; j < 3; j++) {
-                if (i == j) {
-                    mpfr_sqr(x, q[sq_a[i][0]], MPFR_RNDN);
-                    mpfr_fma(x, q[sq_a[i][1]], q[sq_a[i][1]], x, MPFR_RNDN);
-                    mpfr_mul_2ui(x, x, 1, MPFR_RNDN);
-                    mpfr_ui_sub(x, 1, x, MPFR_RNDN);
-                } else {
-                    const int *o = off[i][j];
-                    mpfr_mul(x, q[o[0]], q[o[1]], MPFR_RNDN);
-                    mpfr_mul(d, q[o[2]], q[3], MPFR_RNDN);
-                    if (o[3] > 0) mpfr_add(x, x, d, MPFR_RNDN);
-                    else mpfr_sub(x, x, d, MPFR_RNDN);
-                    mpfr_mul_2ui(x, x, 1, MPFR_RNDN);
-                }
-                mpfr_get_q(out->m[i][j], x);
-                /* times S_j(tm) = (1 - tm) s0 + tm s1 */
-                mpq_set_d(sq, k0->s[j]);
-                mpq_mul(sq, sq, one_m);
-                mpq_set_d(tq, k1->s[j]);
-                mpq_mul(tq, tq, tm);
-                mpq_add(sq, sq, tq);
-                mpq_mul(out->m[i][j], out->m[i][j], sq);
-            }
-            mpq_set_d(sq, k0->t[i]);
-            mpq_mul(sq, sq, one_m);
-            mpq_set_d(tq, k1->t[i]);
-            mpq_mul(tq, tq, tm);
-            mpq_add(out->m[i][3], sq, tq);
-        }
-    }
-    mpq_clears(one_m, sq, tq, NULL);
-    for (i = 0; i < 4; i++) mpfr_clear(q[i]);
-    mpfr_clears(d, t, x, (mpfr_ptr)0);
-}
 
 /* The exact map of node n (its operations composed, motion at time s). */
 static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
 {
     const sc_node *N = &s->nodes[n];
     qmap a, r;
-    qm_init(&a);
-    qm_init(&r);
+    sct_qm_init(&a);
+    sct_qm_init(&r);
     if (N->trs) {
-        trs_map(&s->keys[N->trs - 1], &s->keys[N->trs], N->nlerp, tm, out);
+        sct_trs_map(&s->keys[N->trs - 1], &s->keys[N->trs], N->nlerp, tm, out);
     } else if (N->motion) {
-        qm_from(out, &s->ops[N->first].a, &s->ops[N->first + 1].a, tm);
+        sct_qm_from(out, &s->ops[N->first].a, &s->ops[N->first + 1].a, tm);
     } else {
         mpq_t zero;
         mpq_init(zero);
-        qm_ident(out);
+        sct_qm_ident(out);
         for (int q = N->first; q < N->first + N->n; q++) {   /* out = out o op */
-            qm_from(&a, &s->ops[q].a, NULL, zero);
-            qm_compose(&r, out, &a);
+            sct_qm_from(&a, &s->ops[q].a, NULL, zero);
+            sct_qm_compose(&r, out, &a);
             for (int i = 0; i < 3; i++)
                 for (int j = 0; j < 4; j++)
                     mpq_set(out->m[i][j], r.m[i][j]);
         }
         mpq_clear(zero);
     }
-    qm_clear(&a);
-    qm_clear(&r);
+    sct_qm_clear(&a);
+    sct_qm_clear(&r);
 }
 
 static xu_rng rng = {88172645463325252u};
@@ -293,7 +165,7 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
     mpq_t *tm = malloc((size_t)(s.nn > 0 ? s.nn : 1) * sizeof *tm);
     for (int n = 0; n < s.nn; n++) mpq_init(tm[n]);
     qmap W, N, R;
-    qm_init(&W); qm_init(&N); qm_init(&R);
+    sct_qm_init(&W); sct_qm_init(&N); sct_qm_init(&R);
     for (int k = 0; k < ntimes; k++) {
         for (int n = 0; n < s.nn; n++) {
             if (k < 5) mpq_set_si(tm[n], num[k], (unsigned long)den[k]);
@@ -307,10 +179,10 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
                 check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
                 continue;
             }
-            qm_ident(&W);
+            sct_qm_ident(&W);
             for (int n = L->node; n >= 0; n = s.nodes[n].parent) {   /* W = N o W */
                 node_map(&s, n, tm[n], &N);
-                qm_compose(&R, &N, &W);
+                sct_qm_compose(&R, &N, &W);
                 for (int i = 0; i < 3; i++)
                     for (int j = 0; j < 4; j++)
                         mpq_set(W.m[i][j], R.m[i][j]);
@@ -321,7 +193,7 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
     st->leaves += s.nl;
     for (int n = 0; n < s.nn; n++) mpq_clear(tm[n]);
     free(tm);
-    qm_clear(&W); qm_clear(&N); qm_clear(&R);
+    sct_qm_clear(&W); sct_qm_clear(&N); sct_qm_clear(&R);
     /* every leaf proven, and the scene box the union */
     int bad = 0;
     for (int l = 0; l < s.nl; l++) {
@@ -375,134 +247,6 @@ static int check_text(const char *text, const char *name, stats *st, long *times
     return check_scene(&s, name, st, times_total);
 }
 
-/* A growing text buffer for generated scenes. */
-typedef struct sbuf { char *p; size_t n, cap; } sbuf;
-
-static void sb_add(sbuf *b, const char *fmt, ...)
-{
-    va_list ap;
-    for (;;) {
-        va_start(ap, fmt);
-        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0) { fprintf(stderr, "vsnprintf failed\n"); exit(2); }
-        if (b->p && b->n + (size_t)k < b->cap) { b->n += (size_t)k; return; }
-        b->cap = 2 * (b->cap + (size_t)k + 64);
-        b->p = realloc(b->p, b->cap);
-        if (!b->p) { fprintf(stderr, "out of memory\n"); exit(2); }
-    }
-}
-
-/* A deep random scene: a chain of nn nodes (a branch to a random earlier node with probability pb %), each
- * with 0 to 3 operations near an isometry (so that 300 levels stay finite)
- * or a motion node (probability pm %), and nl leaves on nodes near the
- * bottom and anywhere.  Decimal numbers such as 0.1 are not doubles, so
- * the matrices are not exact and every rounding path is taken. */
-static void gen_deep(xu_rng *r, sbuf *b, int nn, int nl, int pm, int pb)
-{
-    static const char *deg[] = {"30", "-45", "90", "1e-3", "123.456", "-179.9"};
-    b->n = 0;
-    sb_add(b, "certbox-scene 1\n");
-    for (int i = 0; i < nn; i++) {
-        if (i == 0) sb_add(b, "node n0\n");
-        else sb_add(b, "node n%d n%d\n", i, xu_rng_int(r, 0, 99) >= pb ? i - 1 : xu_rng_int(r, 0, i - 1));
-        int motion = xu_rng_int(r, 0, 99) < pm, nops = motion ? 2 : xu_rng_int(r, 0, 3);
-        if (motion && xu_rng_int(r, 0, 2) == 0) {
-            /* a third of the motion nodes: keyframes (any turn, scale near 1) */
-            sb_add(b, "  keyframes");
-            for (int k = 0; k < 2; k++) {
-                sb_add(b, "  %.17g %.17g %d ", 2 * xu_rng_unit(r) - 1, 0.5 * xu_rng_unit(r), xu_rng_int(r, -1, 1));
-                sb_add(b, " %.17g %.17g %.17g %.17g ", xu_rng_unit(r) - 0.5, xu_rng_unit(r) - 0.5,
-                       xu_rng_unit(r) - 0.5, xu_rng_unit(r) - 0.5 + 0.01);
-                sb_add(b, " %.17g %.17g %.17g", 0.95 + 0.1 * xu_rng_unit(r), 0.95 + 0.1 * xu_rng_unit(r),
-                       xu_rng_sign(r) * (0.95 + 0.1 * xu_rng_unit(r)));
-            }
-            sb_add(b, "%s\n", xu_rng_int(r, 0, 3) == 0 ? " nlerp" : "");
-            nops = 0;
-        }
-        for (int q = 0; q < nops; q++) {
-            if (motion && q == 1) sb_add(b, "  motion\n");
-            switch (xu_rng_int(r, 0, 5)) {
-            case 0: case 1:
-                sb_add(b, "  translate %.17g 0.1 %d\n", 20 * xu_rng_unit(r) - 10, xu_rng_int(r, -5, 5));
-                break;
-            case 2:
-                sb_add(b, "  scale %.17g %.17g 0.3\n", xu_rng_sign(r) * (0.8 + 0.45 * xu_rng_unit(r)),
-                       xu_rng_sign(r) * (0.8 + 0.45 * xu_rng_unit(r)));
-                b->n -= 4;      /* "0.3\n" -> a factor near 1 */
-                sb_add(b, "%s\n", xu_rng_int(r, 0, 1) ? "1.1" : "-0.9");
-                break;
-            case 3: case 4:
-                sb_add(b, "  rotate %.17g %.17g 0.25 %s\n", xu_rng_unit(r) - 0.5, xu_rng_unit(r), deg[xu_rng_int(r, 0, 5)]);
-                break;
-            default:
-                sb_add(b, "  matrix 1 0.1 %.17g 3  -0.05 1 0 0.1  0 %.17g 0.99 -2\n", 0.2 * xu_rng_unit(r) - 0.1,
-                       0.1 * xu_rng_unit(r));
-            }
-        }
-    }
-    for (int l = 0; l < nl; l++) {
-        int n = xu_rng_int(r, 0, 1) ? nn - 1 - xu_rng_int(r, 0, nn < 5 ? nn - 1 : 4) : xu_rng_int(r, 0, nn - 1);
-        double x = 10 * xu_rng_unit(r) - 5;
-        switch (xu_rng_int(r, 0, 2)) {
-        case 0: sb_add(b, "box b%d n%d %.17g -1 0.1 %.17g 0.5 0.7\n", l, n, x, x + 3 * xu_rng_unit(r)); break;
-        case 1: sb_add(b, "sphere b%d n%d %.17g 0.1 -2 %.17g\n", l, n, x, 2 * xu_rng_unit(r)); break;
-        default: sb_add(b, "ellipsoid b%d n%d 0.1 %.17g 1 0.5 0.2 %.17g 0.6 -0.8 0 0.8 0.6 0 0 0 1\n", l, n, x,
-                        xu_rng_unit(r));
-        }
-    }
-}
-
-/* Scenes where the composed maps are the whole bound, so that a wrong
- * rounding direction shows: kind 0, a chain of nn nodes with 65 to 90
- * operations each (more than a leaf's 64 level-by-level steps, so its leaves
- * go straight to the interval maps) and point or thin box leaves; kind 1, a
- * chain of nn motion nodes, each a translation moving by 0.001 to 0.01
- * (past 128 of them: the world map with the hull of M0 and M1); kind 2,
- * nodes of 70 operations that are exact in doubles (small power-of-two
- * translations, signed permutations) but for a scale and a translation
- * by decimals, and
- * point leaves: the result is a few units in the last place wide, so a
- * product or sum rounded the wrong way fails the exact check. */
-static void gen_tight(xu_rng *r, sbuf *b, int kind, int nn, int nl)
-{
-    b->n = 0;
-    sb_add(b, "certbox-scene 1\n");
-    for (int i = 0; i < nn; i++) {
-        if (i == 0) sb_add(b, "node n0\n");
-        else sb_add(b, "node n%d n%d\n", i, i - 1);
-        if (kind == 1) {
-            sb_add(b, "  translate 0.1 %.17g 0\n  motion\n  translate %.17g 0.1 0.3\n",
-                   0.01 * xu_rng_unit(r), 0.001 + 0.01 * xu_rng_unit(r));
-            continue;
-        }
-        if (kind == 2) {
-            int a = xu_rng_int(r, 0, 69), c = xu_rng_int(r, 0, 69);
-            for (int q = 0; q < 70; q++) {
-                if (q == a) sb_add(b, "  scale %.17g -0.3 %.17g\n", 0.5 + xu_rng_unit(r), 2 * xu_rng_unit(r) - 1);
-                else if (q == c) sb_add(b, "  translate 0.1 %.17g -0.7\n", xu_rng_unit(r));
-                else if (q % 3 == 0) sb_add(b, "  rotate 0 0 1 90\n");
-                else if (q % 3 == 1) sb_add(b, "  scale -1 1 -1\n");
-                else sb_add(b, "  translate 0x1p-%d 0 -0x1p-%d\n", xu_rng_int(r, 4, 9), xu_rng_int(r, 4, 9));
-            }
-            continue;
-        }
-        int nops = xu_rng_int(r, 65, 90);
-        for (int q = 0; q < nops; q++)
-            switch (xu_rng_int(r, 0, 3)) {
-            case 0: sb_add(b, "  translate 0.1 %.17g -0.3\n", xu_rng_unit(r) - 0.5); break;
-            case 1: sb_add(b, "  rotate 0.2 %.17g 1 %.17g\n", xu_rng_unit(r), 10 * xu_rng_unit(r)); break;
-            case 2: sb_add(b, "  scale 1.1 %.17g 0.9\n", 0.9 + 0.2 * xu_rng_unit(r)); break;
-            default: sb_add(b, "  matrix 1 0.01 0 0.7  0 1 %.17g 0  0 0 1 0.3\n", 0.02 * xu_rng_unit(r));
-            }
-    }
-    for (int l = 0; l < nl; l++) {
-        int n = xu_rng_int(r, 0, nn - 1);
-        double x = xu_rng_unit(r) - 0.5, w = kind == 0 && xu_rng_int(r, 0, 1) ? 1e-9 * xu_rng_unit(r) : 0.0;
-        double y = kind == 2 ? 3 * xu_rng_unit(r) : 0.1, z = kind == 2 ? xu_rng_unit(r) - 0.5 : -0.3;
-        sb_add(b, "box b%d n%d %.17g %.17g %.17g %.17g %.17g %.17g\n", l, kind == 1 ? nn - 1 : n, x, y, z, x + w, y, z);
-    }
-}
 
 /* The level-by-level evaluation (each leaf walked to the root through the
  * kernels, as the tool did before it composed deep chains): quadratic, so
@@ -568,8 +312,8 @@ static int check_deep(stats *st, long *times_total, int *count, long *same, long
     char name[64], err[512];
     for (size_t k = 0; k < sizeof shape / sizeof shape[0]; k++)
         for (int rep = 0; rep < shape[k].reps; rep++) {
-            if (shape[k].pm >= 0) gen_deep(&r, &b, shape[k].nn, shape[k].nl, shape[k].pm, shape[k].pb);
-            else gen_tight(&r, &b, -1 - shape[k].pm, shape[k].nn, shape[k].nl);
+            if (shape[k].pm >= 0) sct_gen_deep(&r, &b, shape[k].nn, shape[k].nl, shape[k].pm, shape[k].pb);
+            else sct_gen_tight(&r, &b, -1 - shape[k].pm, shape[k].nn, shape[k].nl);
             snprintf(name, sizeof name, "deep-%d-%d-%d#%d", shape[k].nn, shape[k].nl, shape[k].pm, rep);
             scene s;
             if (scene_parse(&s, b.p, name, err, sizeof err) != 0) {
@@ -610,11 +354,11 @@ static int check_deep(stats *st, long *times_total, int *count, long *same, long
 static int check_long_chain(stats *st, long *times_total, int nodes, int leaves)
 {
     sbuf b = {NULL, 0, 0};
-    sb_add(&b, "certbox-scene 1\nnode n0\n  translate 1 0 0\n");
+    sct_sb_add(&b, "certbox-scene 1\nnode n0\n  translate 1 0 0\n");
     for (int i = 1; i < nodes; i++)
-        sb_add(&b, "node n%d n%d\n  translate 1 0 0\n", i, i - 1);
+        sct_sb_add(&b, "node n%d n%d\n  translate 1 0 0\n", i, i - 1);
     for (int k = 0; k < leaves; k++)
-        sb_add(&b, "box b%d n%d %d 0 0 %d 1 1\n", k, nodes - 1, k, k + 1);
+        sct_sb_add(&b, "box b%d n%d %d 0 0 %d 1 1\n", k, nodes - 1, k, k + 1);
     long c0 = st->checks;
     int fails = check_text(b.p, "chain", st, times_total);
     printf("test_scene: linear time: a %d-node chain of `translate 1 0 0` with %d boxes on its deepest node "
