@@ -161,10 +161,14 @@ case $name in
   *)
     # Two passes.  1: CVC4 alone, CBX_WP_TIMEOUT1 (120 s): it proves most
     # goals in well under a second and nearly all the rest within 10 s (the
-    # big behaviors' postconditions take 2-9 s).  The limit is wall time,
-    # and three jobs of two prover processes share two cores, so a goal's
-    # CPU time is a third of it under load, and less on a slow machine:
-    # each limit tried (2, 10, 20, 40 s) sent some 6-20 s goal to pass 2
+    # big behaviors' postconditions take 2-9 s).  Why3 enforces the limit
+    # (proofs/setup.sh gives CVC4 none of its own): a prover is stopped at
+    # the limit in CPU time or about 1.5 times it in wall time (a spinning
+    # prover at 4 s: stopped after 4.0 s alone, after 6.1 s beside three
+    # busy processes on two cores).  Until 2026-11-29 CVC4's own limit, in
+    # wall time, applied, and three jobs of two prover processes share two
+    # cores, so a goal got a third of it as CPU time under load: each limit
+    # tried (2, 10, 20, 40 s) sent some 6-20 s goal to pass 2
     # on some machine (2026-11-29, a machine 2.2 times slower than the
     # report's: T64's cell_imat at 40 s, 627 s instead of 160 s; L64's
     # it_sub_all, 726 s instead of 127 s, every lemma proved again).  The
