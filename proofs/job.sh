@@ -159,35 +159,15 @@ case $name in
     # shellcheck disable=SC2086
     $FC $TU $OPTS -wp-fct $(fcts $TU $SG --dead-code) > $out/wp-$name.log 2>&1 || true ;;
   *)
-    # Two passes.  1: CVC4 alone, CBX_WP_TIMEOUT1 (120 s): it proves most
-    # goals in well under a second and nearly all the rest within 10 s (the
-    # big behaviors' postconditions take 2-9 s).  Why3 enforces the limit
-    # (proofs/setup.sh gives CVC4 none of its own): a prover is stopped at
-    # the limit in CPU time or about 1.5 times it in wall time (a spinning
-    # prover at 4 s: stopped after 4.0 s alone, after 6.1 s beside three
-    # busy processes on two cores).  Until 2026-11-29 CVC4's own limit, in
-    # wall time, applied, and three jobs of two prover processes share two
-    # cores, so a goal got a third of it as CPU time under load: each limit
-    # tried (2, 10, 20, 40 s) sent some 6-20 s goal to pass 2
-    # on some machine (2026-11-29, a machine 2.2 times slower than the
-    # report's: T64's cell_imat at 40 s, 627 s instead of 160 s; L64's
-    # it_sub_all, 726 s instead of 127 s, every lemma proved again).  The
-    # price: a goal that CVC4 cannot prove costs 120 s before pass 2 gives
-    # it to Z3 (the known ones are raced from pass 1: L*, PSR64); on a
-    # normal run no goal reaches the limit (proofs/report.md: no pass 2).  2: both
-    # provers raced with CBX_WP_TIMEOUT, on the functions where pass 1 left
-    # a goal unproved (every goal of those functions is regenerated and
-    # proved again).  The job's log is pass
-    # 1's followed by pass 2's; proofs/report.py takes each goal's last
-    # result.  Racing both provers on every goal cost twice the CPU, and a
-    # second pass over every goal regenerated every task.
+    # Two passes (proofs/README.md says why these limits): 1, CVC4 alone,
+    # CBX_WP_TIMEOUT1 (120 s), enforced by Why3; 2, both provers raced with
+    # CBX_WP_TIMEOUT, on the functions where pass 1 left a goal unproved
+    # (every goal of those functions regenerated and proved again).  The
+    # job's log is pass 1's followed by pass 2's; proofs/report.py takes
+    # each goal's last result.
     # CBX_WP_KEEP_CACHE (make proof, during development): a cache kept
     # between runs, so only changed goals go to the provers; unset (make
-    # proof-check, CI): no cache at all.  Keeping one costs WP a digest of
-    # every printed task, 15% of its own time per goal (measured on 48
-    # goals of proofs/proj.c, 2026-11-27: 12.2 s against 10.5 s of CPU), and
-    # it only served pass 2, which now proves again the few functions it
-    # names instead of reading their other goals back.
+    # proof-check, CI): no cache at all (proofs/README.md: its cost).
     if [ -n "${CBX_WP_KEEP_CACHE:-}" ]; then
       mkdir -p "$CBX_WP_KEEP_CACHE/$name"
       CACHE="-wp-cache update -wp-cache-dir $CBX_WP_KEEP_CACHE/$name"

@@ -79,18 +79,10 @@ in_place = false
 interactive = false
 CONF
 }
-# No --tlimit: Why3 itself stops a prover at the time limit (the goal is
-# then reported Timeout, as with CVC4's own limit).  CVC4's limit reads the
-# clock at every step of its search, a system call on some machines: on
-# 81 goals of job BSA64 (2026-11-29, a paravirtualised machine whose clock
-# reads trap to the kernel) CVC4 took 20.3 s with --tlimit and 12.6 s
-# without, the same 81 results.
-# HUGE: glibc's malloc asks for transparent huge pages where the kernel
-# gives them on request (/sys/kernel/mm/transparent_hugepage/enabled:
-# madvise); a CVC4 process touches some 40 MB, one page fault per 4 KB
-# page otherwise.  On the same 81 goals: 12.6 s without, 9.5-10.7 s with
-# it, the same results.  Where the kernel gives no huge pages it does
-# nothing.
+# No --tlimit (Why3 itself stops a prover at the time limit), and glibc's
+# malloc asked for transparent huge pages (nothing where the kernel gives
+# none): why and what it saves, proofs/README.md (the provers' command
+# lines).
 HUGE="env GLIBC_TUNABLES=glibc.malloc.hugetlb=1"
 CVC4CMD="$HUGE $cvc4 --stats --lang=smt2 %f"
 CVC4STEPS="$HUGE $cvc4 --stats --rlimit=%S --lang=smt2 %f"
