@@ -56,6 +56,7 @@ typedef struct cbx_vec8 { double v0, v1, v2, v3, v4, v5, v6, v7; } cbx_vec8;
     requires rng: -0x1p1019 <= a <= 0x1p1019 && -0x1p1019 <= b <= 0x1p1019;
     assigns \nothing;
     ensures fin: \is_finite(\result.hi) && \is_finite(\result.lo);
+    ensures rn: \result.hi == (double)(a + b);
     ensures exact: \result.hi + \result.lo == a + b;
 */
 cbx_dd cbx_two_sum(double a, double b);
@@ -65,6 +66,7 @@ cbx_dd cbx_two_sum(double a, double b);
     requires low: a*b == 0 || a*b >= 0x1p-969 || a*b <= -0x1p-969;
     assigns \nothing;
     ensures fin: \is_finite(\result.hi) && \is_finite(\result.lo);
+    ensures rn: \result.hi == (double)(a*b);
     ensures exact: \result.hi + \result.lo == a*b;
 */
 cbx_dd cbx_two_prod(double a, double b);

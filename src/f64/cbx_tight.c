@@ -5,16 +5,19 @@
  * special cases and infinite ends are kept.  Each finite end is then
  * tightened at its vertex v (the point of the box where the end is reached):
  * the exact end is E = t + m0 v0 + m1 v1 + m2 v2, a sum of seven doubles
- * once each product is split exactly (two_prod).  A candidate c (the last
- * term after three distillation passes, then its neighbours) replaces the
- * end only when a certificate shows c <= E (c >= E for an upper end):
- * the certificate distils the eight terms (E's seven, and -c) with two_sum,
- * which keeps their exact sum, until the largest term decides the sign.
- * So containment rests on the proven kernel and on the exactness of
- * two_sum / two_prod (src/core/cbx_eft.h); optimality (c = RD(E)) is what the
- * GMP tests check on every case.  When the certificate cannot decide (some
- * nonzero product below 2^-968, magnitudes above 2^1015) the kernel's end
- * stays: sound, within its proven bound.
+ * once each product is split exactly (two_prod).  A candidate c replaces
+ * the end only when a certificate shows c <= E (c >= E for an upper end).
+ * Three tries, cheapest first: a compensated dot product with a proven
+ * error bound (dot_end: nearly every end), two distillation passes and a
+ * sign decision (tighten_fast), and the full search (the last term after
+ * three distillation passes, then its neighbours, each certified by
+ * distilling the eight terms, E's seven and -c, with two_sum, which keeps
+ * their exact sum, until the largest term decides the sign).  So
+ * containment rests on the proven kernel and on the exactness of two_sum /
+ * two_prod (src/core/cbx_eft.h); optimality (c = RD(E)) is what the GMP
+ * tests check on every case.  When no certificate decides (some nonzero
+ * product below 2^-968, magnitudes above 2^1015) the kernel's end stays:
+ * sound, within its proven bound.
  */
 #include "certbox.h"
 #include "cbx_round.h"
@@ -249,6 +252,158 @@ static double tighten_core(double r, cbx_vec8 y)
     return best;
 }
 
+/* The first try at a tight end (tighten_lo, tighten_hi): Ogita, Rump and
+ * Oishi's compensated dot product (Dot2, SIAM J. Sci. Comput. 26(6),
+ * 2005) with a certified error bound, branch-light and without the
+ * distillation's dependency chains.  E = t + m.v is split exactly into
+ * s3 (three two_sums of t and the rounded products) plus a tail T of six
+ * error terms; the tail is summed to nearest (r, off by at most d) and c
+ * = RN(s3 + r) with its error e, so E - c = e + (T - r) lies within d of
+ * e.  e >= d certifies c <= E (c is then RD(E): e is at most half the
+ * gap above c); e < -d certifies E < c, and pred(c) <= E when c - pred(c)
+ * >= d - e.  A tail of zeros means E = s3 exactly.  ok == 0 (products
+ * outside [2^-968, 2^1014], |t| > 2^1015, or E within d of a double other
+ * than s3): tighten_fast and the full search decide. */
+
+/* One product's range for the fast end: 0, or its rounded value in
+ * [2^-968, 2^1014] (two_prod's domain; sums that stay in two_sum's). */
+/* proof: -wp-split */
+/*@ requires fin: \is_finite(m) && \is_finite(v) && in_dom(m, v);
+    assigns \nothing;
+    ensures ok: \result != 0 ==> (m*v == 0 || 0x1p-969 <= \abs(m*v) <= 0x1p1015);
+*/
+static int fast_ok(double m, double v)
+{
+    if (m == 0.0 || v == 0.0) {
+        return 1;
+    }
+    double p = cbx_abs(cbx_mul_rn(m, v));
+    /*@ assert lo: p >= 0x1p-968 ==> 0x1p-969 <= \abs(m*v); */
+    /*@ assert hi: p <= 0x1p1014 ==> \abs(m*v) <= 0x1p1015; */
+    return p >= 0x1p-968 && p <= 0x1p1014;
+}
+
+/* Six doubles of magnitude at most M summed to nearest: five additions,
+ * each off by at most u times its sum plus eta; step k's error and
+ * magnitude carried in its assertions (23.1 u M + 9 eta in all).  The
+ * multiples of eta are whole: an ACSL constant is a double, and 1.01 eta
+ * would round to eta. */
+/*@ requires fin: \is_finite(x0) && \is_finite(x1) && \is_finite(x2) && \is_finite(x3)
+                  && \is_finite(x4) && \is_finite(x5) && \is_finite(M);
+    requires mag: \abs(x0) <= M && \abs(x1) <= M && \abs(x2) <= M && \abs(x3) <= M
+                  && \abs(x4) <= M && \abs(x5) <= M && M <= 0x1p1000;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures err: \abs(\result - (x0 + x1 + x2 + x3 + x4 + x5)) <= 0x1p-48 * M + 0x1.2p-1071;
+*/
+static double sum6(double x0, double x1, double x2, double x3, double x4, double x5, double M)
+{
+    double a1 = cbx_add_rn(x0, x1);
+    (void)M; /* the bound's parameter: used by the contract only */
+    /*@ assert e1: \abs(a1 - (x0 + x1)) <= 0x1p-52 * M + 0x1p-1074; */
+    /*@ assert m1: \abs(a1) <= 0x1.001p1 * M + 0x1p-1074; */
+    double a2 = cbx_add_rn(a1, x2);
+    /*@ assert t2: \abs(a2 - (a1 + x2)) <= 0x1p-53 * (\abs(a1) + \abs(x2)) + 0x1p-1074; */
+    /*@ assert s2: \abs(a1) + \abs(x2) <= 0x1.001p1 * M + M + 0x1p-1074; */
+    /*@ assert w2: 0x1p-53 * (\abs(a1) + \abs(x2)) <= 0x1p-53 * (0x1.001p1 * M + M + 0x1p-1074); */
+    /*@ assert u2: \abs(a2 - (a1 + x2)) <= 0x1.81p-52 * M + 0x1p-1073; */
+    /*@ assert e2: \abs(a2 - (x0 + x1 + x2)) <= 0x1.8p-51 * M + 0x1.8p-1073; */
+    /*@ assert m2: \abs(a2) <= 0x1.801p1 * M + 0x1.8p-1073; */
+    double a3 = cbx_add_rn(a2, x3);
+    /*@ assert t3: \abs(a3 - (a2 + x3)) <= 0x1p-53 * (\abs(a2) + \abs(x3)) + 0x1p-1074; */
+    /*@ assert s3: \abs(a2) + \abs(x3) <= 0x1.801p1 * M + M + 0x1.8p-1073; */
+    /*@ assert w3: 0x1p-53 * (\abs(a2) + \abs(x3)) <= 0x1p-53 * (0x1.801p1 * M + M + 0x1.8p-1073); */
+    /*@ assert u3: \abs(a3 - (a2 + x3)) <= 0x1.01p-51 * M + 0x1p-1073; */
+    /*@ assert e3: \abs(a3 - (x0 + x1 + x2 + x3)) <= 0x1.6p-50 * M + 0x1.4p-1072; */
+    /*@ assert m3: \abs(a3) <= 0x1.001p2 * M + 0x1.4p-1072; */
+    double a4 = cbx_add_rn(a3, x4);
+    /*@ assert t4: \abs(a4 - (a3 + x4)) <= 0x1p-53 * (\abs(a3) + \abs(x4)) + 0x1p-1074; */
+    /*@ assert s4: \abs(a3) + \abs(x4) <= 0x1.001p2 * M + M + 0x1.4p-1072; */
+    /*@ assert w4: 0x1p-53 * (\abs(a3) + \abs(x4)) <= 0x1p-53 * (0x1.001p2 * M + M + 0x1.4p-1072); */
+    /*@ assert u4: \abs(a4 - (a3 + x4)) <= 0x1.41p-51 * M + 0x1p-1073; */
+    /*@ assert e4: \abs(a4 - (x0 + x1 + x2 + x3 + x4)) <= 0x1.1p-49 * M + 0x1.cp-1072; */
+    /*@ assert m4: \abs(a4) <= 0x1.401p2 * M + 0x1.cp-1072; */
+    double a5 = cbx_add_rn(a4, x5);
+    /*@ assert t5: \abs(a5 - (a4 + x5)) <= 0x1p-53 * (\abs(a4) + \abs(x5)) + 0x1p-1074; */
+    /*@ assert s5: \abs(a4) + \abs(x5) <= 0x1.401p2 * M + M + 0x1.cp-1072; */
+    /*@ assert w5: 0x1p-53 * (\abs(a4) + \abs(x5)) <= 0x1p-53 * (0x1.401p2 * M + M + 0x1.cp-1072); */
+    /*@ assert u5: \abs(a5 - (a4 + x5)) <= 0x1.81p-51 * M + 0x1p-1073; */
+    return a5;
+}
+
+/*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
+    requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2);
+    assigns \nothing;
+    ensures fin: \result.ok != 0 ==> \is_finite(\result.c);
+    ensures pos: (\result.ok != 0 && neg == 0) ==> \result.c <= m0*v0 + m1*v1 + m2*v2 + t;
+    ensures neg: (\result.ok != 0 && neg != 0) ==> \result.c <= -(m0*v0 + m1*v1 + m2*v2 + t);
+*/
+static cand dot_end(double m0, double m1, double m2, double t, double v0, double v1, double v2,
+                    int neg)
+{
+    cand res;
+    res.c = 0.0;
+    res.ok = 0;
+    if (!(fast_ok(m0, v0) && fast_ok(m1, v1) && fast_ok(m2, v2)
+          && t >= -0x1p1015 && t <= 0x1p1015)) {
+        return res;
+    }
+    cbx_dd p0 = cbx_two_prod(m0, v0);
+    cbx_dd p1 = cbx_two_prod(m1, v1);
+    cbx_dd p2 = cbx_two_prod(m2, v2);
+    /*@ assert r0: \abs(p0.hi) <= 0x1.01p1015 && \abs(p0.lo) <= 0x1p1000; */
+    /*@ assert r1: \abs(p1.hi) <= 0x1.01p1015 && \abs(p1.lo) <= 0x1p1000; */
+    /*@ assert r2: \abs(p2.hi) <= 0x1.01p1015 && \abs(p2.lo) <= 0x1p1000; */
+    double tt = t;
+    if (neg) {
+        p0.hi = -p0.hi; p0.lo = -p0.lo; p1.hi = -p1.hi; p1.lo = -p1.lo;
+        p2.hi = -p2.hi; p2.lo = -p2.lo; tt = -t;
+    }
+    /*@ assert sg: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + tt
+                   == (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)); */
+    /*@ assert rn: \abs(p0.hi) <= 0x1.01p1015 && \abs(p0.lo) <= 0x1p1000
+                   && \abs(p1.hi) <= 0x1.01p1015 && \abs(p1.lo) <= 0x1p1000
+                   && \abs(p2.hi) <= 0x1.01p1015 && \abs(p2.lo) <= 0x1p1000
+                   && -0x1p1015 <= tt <= 0x1p1015; */
+    cbx_dd s1 = cbx_two_sum(tt, p0.hi);
+    /*@ assert q1: \abs(s1.hi) <= 0x1.04p1016 && \abs(s1.lo) <= 0x1p1000; */
+    cbx_dd s2 = cbx_two_sum(s1.hi, p1.hi);
+    /*@ assert q2: \abs(s2.hi) <= 0x1.9p1016 && \abs(s2.lo) <= 0x1p1000; */
+    cbx_dd s3 = cbx_two_sum(s2.hi, p2.hi);
+    /*@ assert q3: \abs(s3.hi) <= 0x1.1p1017 && \abs(s3.lo) <= 0x1p1000; */
+    /*@ assert ex: s3.hi + (p0.lo + p1.lo + p2.lo + s1.lo + s2.lo + s3.lo) == (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)); */
+    double mx = cbx_max2(cbx_max2(cbx_max2(cbx_abs(p0.lo), cbx_abs(p1.lo)),
+                                  cbx_max2(cbx_abs(p2.lo), cbx_abs(s1.lo))),
+                         cbx_max2(cbx_abs(s2.lo), cbx_abs(s3.lo)));
+    if (mx == 0.0) {
+        /*@ assert z: s3.hi == (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)); */
+        res.c = s3.hi;
+        res.ok = 1;
+        return res;
+    }
+    double r = sum6(p0.lo, p1.lo, p2.lo, s1.lo, s2.lo, s3.lo, mx);
+    double d = cbx_add_rn(cbx_mul_rn(mx, 0x1p-47), 0x1p-1060);
+    /*@ assert dd: 0x1p-48 * mx + 0x1.2p-1071 <= d; */
+    cbx_dd ce = cbx_two_sum(s3.hi, r);
+    double c = ce.hi;
+    double e = ce.lo;
+    /*@ assert w: (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)) - c >= e - d; */
+    if (e >= d) {
+        res.c = c;
+        res.ok = 1;
+    } else if (e < -d && c >= -0x1p1017 && c <= 0x1p1017) {
+        double p = neighbour(c, 1);
+        cbx_dd h = eft_sum(c, -p);
+        double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);
+        if (h.lo == 0.0 && g <= h.hi) {
+            /*@ assert w2: (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)) >= p; */
+            res.c = p;
+            res.ok = 1;
+        }
+    }
+    return res;
+}
+
 /* The seven exact terms of t + m.v, negated when neg != 0; ok == 0 when a
  * product is outside two_prod's domain. */
 typedef struct terms { cbx_vec8 y; int ok; } terms;
@@ -295,6 +450,10 @@ static terms exact_terms(double m0, double m1, double m2, double t,
 static double tighten_lo(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
+    cand f = dot_end(m0, m1, m2, t, v0, v1, v2, 0);
+    if (f.ok != 0) {
+        return f.c > r ? f.c : r;
+    }
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 0);
     if (!e.ok) {
         return r;
@@ -313,6 +472,11 @@ static double tighten_lo(double r, double m0, double m1, double m2, double t,
 static double tighten_hi(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
+    cand f = dot_end(m0, m1, m2, t, v0, v1, v2, 1);
+    if (f.ok != 0) {
+        double y = -f.c;
+        return y < r ? y : r;
+    }
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 1);
     if (!e.ok) {
         return r;
