@@ -1,21 +1,26 @@
 /*
  * Tight mode: the smallest double box that contains the exact image.
  *
- * The proven interval transform (cbx_transform_box) runs first: its status,
- * special cases and infinite ends are kept.  Each finite end is then
- * tightened at its vertex v (the point of the box where the end is reached):
+ * The proven interval transform runs first: on the fast path (map and box
+ * in cbx_fast.h's range, one check each) its branch-free kernel, else
+ * cbx_transform_box, whose status, special cases and infinite ends are
+ * kept.  Each finite end is then tightened at its vertex v (the point of
+ * the box where the end is reached; on the fast path chosen by a select):
  * the exact end is E = t + m0 v0 + m1 v1 + m2 v2, a sum of seven doubles
  * once each product is split exactly (two_prod).  A candidate c replaces
  * the end only when a certificate shows c <= E (c >= E for an upper end).
  * Three tries, cheapest first: a compensated dot product with a proven
- * error bound (dot_end: nearly every end), two distillation passes and a
+ * error bound (dot_sum: nearly every end), two distillation passes and a
  * sign decision (tighten_fast), and the full search (the last term after
  * three distillation passes, then its neighbours, each certified by
  * distilling the eight terms, E's seven and -c, with two_sum, which keeps
  * their exact sum, until the largest term decides the sign).  So
  * containment rests on the proven kernel and on the exactness of two_sum /
  * two_prod (src/core/cbx_eft.h); optimality (c = RD(E)) is what the GMP
- * tests check on every case.  When no certificate decides (some nonzero
+ * tests check on every case.  On the fast path nothing branches on data but
+ * the rare end dot_sum leaves undecided (a sign or a certificate is a
+ * coin toss: a branch on it cost about one mispredicted jump per end;
+ * docs/measurements.md).  When no certificate decides (some nonzero
  * product below 2^-968, magnitudes above 2^1015) the kernel's end stays:
  * sound, within its proven bound.
  */
@@ -24,6 +29,8 @@
 #include "cbx_domain.h"
 #include "cbx_vertex.h"
 #include "cbx_eft.h"
+#include "cbx_kernel.h"
+#include "cbx_fast.h"
 
 #ifdef __FRAMAC__
 #include "cbx_tight.h"
@@ -136,9 +143,10 @@ static double approx(cbx_vec8 y)
 /* The next double above c, or below (dn): c +- (RN(phi |c|) + eta) with
  * phi = u (1 + 2u) (Rump, Zimmermann, Boldo, Melquiond, BIT 2009).  Only
  * a candidate: the certificate decides. */
-/*@ requires fin: \is_finite(c) && -0x1p1017 <= c <= 0x1p1017;
+/*@ requires fin: \is_finite(c) && -0x1p1018 <= c <= 0x1p1018;
     assigns \nothing;
     ensures fin: \is_finite(\result);
+    ensures rng: -0x1.01p1018 <= \result <= 0x1.01p1018;
 */
 static double neighbour(double c, int dn)
 {
@@ -165,6 +173,10 @@ static int eft_ok(double m, double v)
 /* A candidate and whether it is certified. */
 typedef struct cand { double c; int ok; } cand;
 
+/* dot_sum's "no certificate": below every end it could certify (those are
+ * above -2^1018), so max(r, CBX_NONE) == r for every finite r. */
+#define CBX_NONE (-0x1.fffffffffffffp1023)
+
 /* The fast certificate: two distillation passes and one sign decision on
  * the residual.  The first pass leaves the rounded sum s in v7; s moves
  * out (vsum(z) = E - s) and a second pass brings the residual's rounded
@@ -178,7 +190,7 @@ typedef struct cand { double c; int ok; } cand;
  * E.  Until 2026-11-29 the sum vsum(w) + (c - pred(c)) was certified
  * again, when exact in v7: it was not on 13% of the ends below (random
  * maps and boxes), which then took the full search.  ok == 0 (E within
- * the second-order terms of c, or a tie): the full search decides. */
+ * the second-order terms of c): the full search decides. */
 /*@ requires fin: vfin(y);
     assigns \nothing;
     ensures fin: \result.ok != 0 ==> \is_finite(\result.c);
@@ -270,17 +282,18 @@ static double tighten_core(double r, cbx_vec8 y)
 /* proof: -wp-split */
 /*@ requires fin: \is_finite(m) && \is_finite(v) && in_dom(m, v);
     assigns \nothing;
+    ensures rng: 0 <= \result <= 1;
     ensures ok: \result != 0 ==> (m*v == 0 || 0x1p-969 <= \abs(m*v) <= 0x1p1015);
 */
 static int fast_ok(double m, double v)
 {
-    if (m == 0.0 || v == 0.0) {
-        return 1;
-    }
     double p = cbx_abs(cbx_mul_rn(m, v));
     /*@ assert lo: p >= 0x1p-968 ==> 0x1p-969 <= \abs(m*v); */
     /*@ assert hi: p <= 0x1p1014 ==> \abs(m*v) <= 0x1p1015; */
-    return p >= 0x1p-968 && p <= 0x1p1014;
+    /*@ assert z0: m == 0 ==> m*v == 0; */
+    /*@ assert z1: v == 0 ==> m*v == 0; */
+    /* counts, not && and ||: no branch on the product's sign or size */
+    return 2 * ((m == 0.0) + (v == 0.0)) + (p >= 0x1p-968) + (p <= 0x1p1014) >= 2;
 }
 
 /* Six doubles of magnitude at most M summed to nearest: five additions,
@@ -331,77 +344,96 @@ static double sum6(double x0, double x1, double x2, double x3, double x4, double
     return a5;
 }
 
+/* -(hi + lo), exactly. */
+/*@ requires fin: \is_finite(a.hi) && \is_finite(a.lo);
+    assigns \nothing;
+    ensures fin: \is_finite(\result.hi) && \is_finite(\result.lo);
+    ensures neg: \result.hi == -a.hi && \result.lo == -a.lo;
+*/
+static cbx_dd dd_neg(cbx_dd a)
+{
+    cbx_dd r;
+    r.hi = -a.hi;
+    r.lo = -a.lo;
+    return r;
+}
+
+/* The three products of an end split exactly (two_prod), when all three
+ * are in dot_sum's range; ok == 0 otherwise. */
+typedef struct prods { cbx_dd p0, p1, p2; int ok; } prods;
+
 /*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
     requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2);
     assigns \nothing;
-    ensures fin: \result.ok != 0 ==> \is_finite(\result.c);
-    ensures pos: (\result.ok != 0 && neg == 0) ==> \result.c <= m0*v0 + m1*v1 + m2*v2 + t;
-    ensures neg: (\result.ok != 0 && neg != 0) ==> \result.c <= -(m0*v0 + m1*v1 + m2*v2 + t);
+    ensures ok: \result.ok != 0 ==> (dd_in(\result.p0) && dd_in(\result.p1) && dd_in(\result.p2)
+                                    && -0x1p1015 <= t <= 0x1p1015);
+    ensures ex: \result.ok != 0 ==> (\result.p0.hi + \result.p0.lo == m0*v0
+                                    && \result.p1.hi + \result.p1.lo == m1*v1
+                                    && \result.p2.hi + \result.p2.lo == m2*v2);
 */
-static cand dot_end(double m0, double m1, double m2, double t, double v0, double v1, double v2,
-                    int neg)
+static prods dot_prods(double m0, double m1, double m2, double t, double v0, double v1, double v2)
 {
-    cand res;
-    res.c = 0.0;
-    res.ok = 0;
-    if (!(fast_ok(m0, v0) && fast_ok(m1, v1) && fast_ok(m2, v2)
-          && t >= -0x1p1015 && t <= 0x1p1015)) {
-        return res;
+    prods q;
+    q.p0.hi = 0.0; q.p0.lo = 0.0; q.p1 = q.p0; q.p2 = q.p0;
+    q.ok = 0;
+    if (fast_ok(m0, v0) + fast_ok(m1, v1) + fast_ok(m2, v2)
+        + (t >= -0x1p1015) + (t <= 0x1p1015) != 5) {
+        return q;
     }
-    cbx_dd p0 = cbx_two_prod(m0, v0);
-    cbx_dd p1 = cbx_two_prod(m1, v1);
-    cbx_dd p2 = cbx_two_prod(m2, v2);
-    /*@ assert r0: \abs(p0.hi) <= 0x1.01p1015 && \abs(p0.lo) <= 0x1p1000; */
-    /*@ assert r1: \abs(p1.hi) <= 0x1.01p1015 && \abs(p1.lo) <= 0x1p1000; */
-    /*@ assert r2: \abs(p2.hi) <= 0x1.01p1015 && \abs(p2.lo) <= 0x1p1000; */
-    double tt = t;
-    if (neg) {
-        p0.hi = -p0.hi; p0.lo = -p0.lo; p1.hi = -p1.hi; p1.lo = -p1.lo;
-        p2.hi = -p2.hi; p2.lo = -p2.lo; tt = -t;
-    }
-    /*@ assert sg: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + tt
-                   == (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)); */
-    /*@ assert rn: \abs(p0.hi) <= 0x1.01p1015 && \abs(p0.lo) <= 0x1p1000
-                   && \abs(p1.hi) <= 0x1.01p1015 && \abs(p1.lo) <= 0x1p1000
-                   && \abs(p2.hi) <= 0x1.01p1015 && \abs(p2.lo) <= 0x1p1000
-                   && -0x1p1015 <= tt <= 0x1p1015; */
-    cbx_dd s1 = cbx_two_sum(tt, p0.hi);
+    q.p0 = cbx_two_prod(m0, v0);
+    q.p1 = cbx_two_prod(m1, v1);
+    q.p2 = cbx_two_prod(m2, v2);
+    q.ok = 1;
+    return q;
+}
+
+/* Ogita, Rump and Oishi's Dot2 on t + p0 + p1 + p2 (each pair exact),
+ * with a proven error bound: three two_sums leave the exact sum E as s3 +
+ * T, T the six error terms; sum6 sums T to nearest (within 2^-48 M + 9
+ * eta, M the largest term), c = RN(s3 + r) with its error e, and d bounds
+ * the rest.  e >= d certifies c <= E; e < -d with c - pred(c) >= 1.125
+ * (d - e) (rounded up, on the exact difference) certifies pred(c); a tail
+ * of zeros gives E = s3.  Which case holds is a coin toss: counts and
+ * selects, and one branch, taken when none holds (rare).  CBX_NONE: no
+ * certificate. */
+/*@ requires fin: \is_finite(t);
+    requires rng: dd_in(p0) && dd_in(p1) && dd_in(p2) && -0x1p1015 <= t <= 0x1p1015;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures below: \result != CBX_NONE ==> \result <= p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t;
+*/
+static double dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
+{
+    cbx_dd s1 = cbx_two_sum(t, p0.hi);
     /*@ assert q1: \abs(s1.hi) <= 0x1.04p1016 && \abs(s1.lo) <= 0x1p1000; */
     cbx_dd s2 = cbx_two_sum(s1.hi, p1.hi);
     /*@ assert q2: \abs(s2.hi) <= 0x1.9p1016 && \abs(s2.lo) <= 0x1p1000; */
     cbx_dd s3 = cbx_two_sum(s2.hi, p2.hi);
     /*@ assert q3: \abs(s3.hi) <= 0x1.1p1017 && \abs(s3.lo) <= 0x1p1000; */
-    /*@ assert ex: s3.hi + (p0.lo + p1.lo + p2.lo + s1.lo + s2.lo + s3.lo) == (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)); */
+    /*@ assert ex: s3.hi + (p0.lo + p1.lo + p2.lo + s1.lo + s2.lo + s3.lo) == p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t; */
     double mx = cbx_max2(cbx_max2(cbx_max2(cbx_abs(p0.lo), cbx_abs(p1.lo)),
                                   cbx_max2(cbx_abs(p2.lo), cbx_abs(s1.lo))),
                          cbx_max2(cbx_abs(s2.lo), cbx_abs(s3.lo)));
-    if (mx == 0.0) {
-        /*@ assert z: s3.hi == (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)); */
-        res.c = s3.hi;
-        res.ok = 1;
-        return res;
-    }
     double r = sum6(p0.lo, p1.lo, p2.lo, s1.lo, s2.lo, s3.lo, mx);
     double d = cbx_add_rn(cbx_mul_rn(mx, 0x1p-47), 0x1p-1060);
     /*@ assert dd: 0x1p-48 * mx + 0x1.2p-1071 <= d; */
     cbx_dd ce = cbx_two_sum(s3.hi, r);
     double c = ce.hi;
     double e = ce.lo;
-    /*@ assert w: (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)) - c >= e - d; */
-    if (e >= d) {
-        res.c = c;
-        res.ok = 1;
-    } else if (e < -d && c >= -0x1p1017 && c <= 0x1p1017) {
-        double p = neighbour(c, 1);
-        cbx_dd h = eft_sum(c, -p);
-        double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);
-        if (h.lo == 0.0 && g <= h.hi) {
-            /*@ assert w2: (neg == 0 ? m0*v0 + m1*v1 + m2*v2 + t : -(m0*v0 + m1*v1 + m2*v2 + t)) >= p; */
-            res.c = p;
-            res.ok = 1;
-        }
+    /*@ assert w: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - c >= e - d; */
+    /*@ assert cr: -0x1p1018 <= c <= 0x1p1018; */
+    double p = neighbour(c, 1);
+    cbx_dd h = cbx_two_sum(c, -p);
+    double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);
+    double nd = -d; /* not in the comparison: -d inside an int sum made Why3 reject the goals */
+    int dn = (e < nd) + (h.lo == 0.0) + (g <= h.hi) == 3;
+    /*@ assert w2: dn != 0 ==> p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t >= p; */
+    /*@ assert z: mx == 0 ==> s3.hi == p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t; */
+    if ((e >= d) + dn + (mx == 0.0) == 0) {
+        return CBX_NONE;
     }
-    return res;
+    double x = e >= d ? c : p;
+    return mx == 0.0 ? s3.hi : x;
 }
 
 /* The seven exact terms of t + m.v, negated when neg != 0; ok == 0 when a
@@ -450,9 +482,12 @@ static terms exact_terms(double m0, double m1, double m2, double t,
 static double tighten_lo(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
-    cand f = dot_end(m0, m1, m2, t, v0, v1, v2, 0);
-    if (f.ok != 0) {
-        return f.c > r ? f.c : r;
+    prods q = dot_prods(m0, m1, m2, t, v0, v1, v2);
+    if (q.ok) {
+        double x = dot_sum(q.p0, q.p1, q.p2, t);
+        if (x != CBX_NONE) {
+            return x > r ? x : r;
+        }
     }
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 0);
     if (!e.ok) {
@@ -472,10 +507,13 @@ static double tighten_lo(double r, double m0, double m1, double m2, double t,
 static double tighten_hi(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
-    cand f = dot_end(m0, m1, m2, t, v0, v1, v2, 1);
-    if (f.ok != 0) {
-        double y = -f.c;
-        return y < r ? y : r;
+    prods q = dot_prods(m0, m1, m2, t, v0, v1, v2);
+    if (q.ok) {
+        double f = dot_sum(dd_neg(q.p0), dd_neg(q.p1), dd_neg(q.p2), -t);
+        if (f != CBX_NONE) {
+            double y = -f;
+            return y < r ? y : r;
+        }
     }
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 1);
     if (!e.ok) {
@@ -492,7 +530,6 @@ static double tighten_hi(double r, double m0, double m1, double m2, double t,
                   && !\is_NaN(l2) && !\is_NaN(h2);
     requires ne: !no_point(l0, h0) && !no_point(l1, h1) && !no_point(l2, h2);
     requires fin: \is_finite(lo) && \is_finite(c) && map_fin(m0, m1, m2, t);
-    requires v: v0 == vlo(m0, l0, h0) && v1 == vlo(m1, l1, h1) && v2 == vlo(m2, l2, h2);
     requires col: (\forall real p; ext_in(p, l0, h0) ==> m0*v0 <= m0*p) && (\forall real p; ext_in(p, l1, h1) ==> m1*v1 <= m1*p) && (\forall real p; ext_in(p, l2, h2) ==> m2*v2 <= m2*p);
     requires gt: lo < c && c <= m0*v0 + m1*v1 + m2*v2 + t;
     assigns \nothing;
@@ -521,7 +558,6 @@ static void tight_lo_sound(double lo, double hi, double c, double m0, double m1,
                   && !\is_NaN(l2) && !\is_NaN(h2);
     requires ne: !no_point(l0, h0) && !no_point(l1, h1) && !no_point(l2, h2);
     requires fin: \is_finite(hi) && \is_finite(c) && map_fin(m0, m1, m2, t);
-    requires v: v0 == vhi(m0, l0, h0) && v1 == vhi(m1, l1, h1) && v2 == vhi(m2, l2, h2);
     requires col: (\forall real p; ext_in(p, l0, h0) ==> m0*v0 >= m0*p) && (\forall real p; ext_in(p, l1, h1) ==> m1*v1 >= m1*p) && (\forall real p; ext_in(p, l2, h2) ==> m2*v2 >= m2*p);
     requires lt: c < hi && m0*v0 + m1*v1 + m2*v2 + t <= c;
     assigns \nothing;
@@ -593,7 +629,147 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
     return r;
 }
 
-cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out)
+/* The vertex of [l, h] where m*x is least (hi: greatest), chosen by a
+ * select on m's sign (no branch): l or h even when m == 0, where every
+ * point gives m*x == 0. */
+/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h) && l <= h;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures val: \result == l || \result == h;
+    ensures col: \forall real p; ext_in(p, l, h) ==> m*\result <= m*p;
+*/
+static double vsel_lo(double m, double l, double h)
+{
+    double v = m >= 0.0 ? l : h;
+    /* the lemmas on v itself: no product of v to rewrite as one of l */
+    if (m > 0.0) {
+        pos_below(m, v, h);
+    } else if (m < 0.0) {
+        neg_below(m, l, v);
+    }
+    /*@ assert vp: m >= 0 ==> v == l; */
+    /*@ assert vn: m < 0 ==> v == h; */
+    /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
+    return v;
+}
+
+/*@ requires fin: \is_finite(m) && \is_finite(l) && \is_finite(h) && l <= h;
+    assigns \nothing;
+    ensures fin: \is_finite(\result);
+    ensures val: \result == l || \result == h;
+    ensures col: \forall real p; ext_in(p, l, h) ==> m*\result >= m*p;
+*/
+static double vsel_hi(double m, double l, double h)
+{
+    double v = m >= 0.0 ? h : l;
+    /* the lemmas on v itself: no product of v to rewrite as one of h */
+    if (m > 0.0) {
+        pos_above(m, l, v);
+    } else if (m < 0.0) {
+        neg_above(m, v, h);
+    }
+    /*@ assert vp: m >= 0 ==> v == h; */
+    /*@ assert vn: m < 0 ==> v == l; */
+    /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
+    return v;
+}
+
+/* One axis of the fast path (map and box in the fast range): both ends
+ * tightened at their vertices with no branch on signs or on which
+ * certificate holds; tighten_lo / tighten_hi branch only to the full
+ * search, for the rare end dot_sum leaves undecided. */
+/*@ requires sound: axis_sound_s(lo, hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    requires fin: map_fin(m0, m1, m2, t)
+                  && \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
+                  && \is_finite(l2) && \is_finite(h2);
+    requires rm: -CBX_SB <= m0 <= CBX_SB && -CBX_SB <= m1 <= CBX_SB && -CBX_SB <= m2 <= CBX_SB;
+    requires rb: -CBX_SB <= l0 <= h0 <= CBX_SB && -CBX_SB <= l1 <= h1 <= CBX_SB
+                 && -CBX_SB <= l2 <= h2 <= CBX_SB;
+    requires rt: -CBX_RT <= t <= CBX_RT;
+    assigns \nothing;
+    ensures sound: axis_sound_s(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+*/
+static tight_result tight_axis_fast(double lo, double hi, double m0, double m1, double m2, double t,
+                                    double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    tight_result r;
+    cbx_fast_row(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    /*@ assert lf: \is_finite(lo) && \is_finite(hi); */
+    double v0 = vsel_lo(m0, l0, h0);
+    double v1 = vsel_lo(m1, l1, h1);
+    double v2 = vsel_lo(m2, l2, h2);
+    double w0 = vsel_hi(m0, l0, h0);
+    double w1 = vsel_hi(m1, l1, h1);
+    double w2 = vsel_hi(m2, l2, h2);
+    double c = tighten_lo(lo, m0, m1, m2, t, v0, v1, v2);
+    double d = tighten_hi(hi, m0, m1, m2, t, w0, w1, w2);
+    if (c > lo) {
+        tight_lo_sound(lo, hi, c, m0, m1, m2, t, l0, h0, l1, h1, l2, h2, v0, v1, v2);
+    }
+    r.lo = c;
+    if (d < hi) {
+        tight_hi_sound(c, hi, d, m0, m1, m2, t, l0, h0, l1, h1, l2, h2, w0, w1, w2);
+    }
+    r.hi = d;
+    return r;
+}
+
+/* The whole box on the fast path: the branch-free kernel's box, each end
+ * then tightened (cbx_fast_box's promise, with CBX_OK).  out may be in
+ * (the inputs are read first). */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    requires fast: map_fast(a) && box_fast(in);
+    assigns *out;
+    CBX_FAST_POST(a, in, out)
+*/
+static cbx_status tight_box_fast(const cbx_affine *a, const cbx_box *in, cbx_box *out)
+{
+    double l0 = in->lo[0];
+    double l1 = in->lo[1];
+    double l2 = in->lo[2];
+    double h0 = in->hi[0];
+    double h1 = in->hi[1];
+    double h2 = in->hi[2];
+    double a00 = a->m[0][0];
+    double a01 = a->m[0][1];
+    double a02 = a->m[0][2];
+    double a03 = a->m[0][3];
+    double a10 = a->m[1][0];
+    double a11 = a->m[1][1];
+    double a12 = a->m[1][2];
+    double a13 = a->m[1][3];
+    double a20 = a->m[2][0];
+    double a21 = a->m[2][1];
+    double a22 = a->m[2][2];
+    double a23 = a->m[2][3];
+    (void)cbx_fast_box(a, in, out);
+    tight_result r0 = tight_axis_fast(out->lo[0], out->hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
+    tight_result r1 = tight_axis_fast(out->lo[1], out->hi[1], a10, a11, a12, a13, l0, h0, l1, h1, l2, h2);
+    tight_result r2 = tight_axis_fast(out->lo[2], out->hi[2], a20, a21, a22, a23, l0, h0, l1, h1, l2, h2);
+    out->lo[0] = r0.lo; out->hi[0] = r0.hi;
+    out->lo[1] = r1.lo; out->hi[1] = r1.hi;
+    out->lo[2] = r2.lo; out->hi[2] = r2.hi;
+    /*@ assert same_in: \at(a->m[0][0], Pre) == a00 && \at(a->m[0][1], Pre) == a01 && \at(a->m[0][2], Pre) == a02
+          && \at(a->m[0][3], Pre) == a03 && \at(a->m[1][0], Pre) == a10 && \at(a->m[1][1], Pre) == a11
+          && \at(a->m[1][2], Pre) == a12 && \at(a->m[1][3], Pre) == a13 && \at(a->m[2][0], Pre) == a20
+          && \at(a->m[2][1], Pre) == a21 && \at(a->m[2][2], Pre) == a22 && \at(a->m[2][3], Pre) == a23
+          && \at(in->lo[0], Pre) == l0 && \at(in->lo[1], Pre) == l1 && \at(in->lo[2], Pre) == l2
+          && \at(in->hi[0], Pre) == h0 && \at(in->hi[1], Pre) == h1 && \at(in->hi[2], Pre) == h2; */
+    /*@ assert same_out: out->lo[0] == r0.lo && out->hi[0] == r0.hi
+          && out->lo[1] == r1.lo && out->hi[1] == r1.hi
+          && out->lo[2] == r2.lo && out->hi[2] == r2.hi; */
+    return CBX_OK;
+}
+
+/* Every other input: cbx_transform_box (status, special cases, infinite
+ * ends), then each finite end tightened at its vertex. */
+/*@ requires valid: \valid_read(a) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, a) && (\separated(out, in) || out == in);
+    assigns *out;
+    CBX_BOX_BEHAVIORS(a, in, out)
+*/
+static cbx_status tight_box_slow(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
     double l0 = in->lo[0];
     double l1 = in->lo[1];
@@ -624,4 +800,14 @@ cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_b
     out->lo[1] = r1.lo; out->hi[1] = r1.hi;
     out->lo[2] = r2.lo; out->hi[2] = r2.hi;
     return st;
+}
+
+/* One check per map and per box, as cbx_transform_box. */
+/* proof: -wp-split */
+cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out)
+{
+    if (cbx_map_fast(a) && cbx_box_fast(in)) {
+        return tight_box_fast(a, in, out);
+    }
+    return tight_box_slow(a, in, out);
 }
