@@ -174,6 +174,17 @@ case_ pball-behind-lo src/f64/cbx_pball.c pb_behind proofs/pball.c le,void ensur
 case_ pball-unit-lo src/f64/cbx_pball.c pb_unit proofs/pball.c r0,in0,rg,i01,r01,i,ok ensures_ok \
   "        ok = s.hi <= 1.0;" \
   "        ok = s.lo <= 1.0;" - &
+# 27. the tight mode's compensated dot product: pred(c) certified when
+#    c - pred(c) >= RN(d - e), without the 1.125 that covers the rounding
+#    (pred(c) may then lie above the exact end: the assertion must fail)
+case_ tight-dot-pred-unpadded src/f64/cbx_tight.c dot_sum proofs/all.c w2,z,below,fin 'assert_w2\|ensures_below' \
+  "    double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);" \
+  "    double g = cbx_sub_rn(d, e);" - &
+# 28. the tight mode's fast path: the lower end's vertex taken at the
+#    other end of the column (the column property must fail)
+case_ tight-vertex-swapped src/f64/cbx_tight.c vsel_lo proofs/all.c vp,vn,z,col,fin,val ensures_col \
+  "    double v = m >= 0.0 ? l : h;" \
+  "    double v = m >= 0.0 ? h : l;" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"
