@@ -167,6 +167,7 @@ typedef enum cbx_class {
 #ifdef __FRAMAC__
 #include "cbx_class.h"
 #include "cbx_chain.h"
+#include "cbx_tight_gap.h"
 #include "cbx_psph.h"
 #include "cbx_pnear.h"
 #include "cbx_pball.h"
@@ -179,8 +180,13 @@ typedef enum cbx_class {
  * exact lower end rounded down, hi = the exact upper end rounded up.
  * Proven: the same statement as cbx_transform_box (containment of the
  * exact image for every real point, the tightness bound), given the
- * exactness of two_sum and two_prod (trusted, proofs/README.md).
- * Optimality is checked against GMP on every test case.  Ends where a
+ * exactness of two_sum and two_prod (trusted, proofs/README.md), and,
+ * for maps and boxes of the fast range whose row has every product at the
+ * box's ends zero or in [2^-967, 2^1013] and |t| <= 2^1015 (trow_dom),
+ * each end within 2^-50 |E| + 2^-96 S + 2^-1050 of the exact end E
+ * (specs/cbx_tight_gap.h: about 4 ulps of E, or 2^-96 S under
+ * cancellation; cbx_transform_box's bound is 12 u S).  Optimality is
+ * checked against GMP on every test case.  Ends where a
  * nonzero product m_ij v_j is below 2^-968 in magnitude, or |t|, a product or
  * the exact end is above 2^1015, keep cbx_transform_box's end (sound, maybe not the
  * tightest).  Maps and boxes in the fast range (every entry and end at most
@@ -192,6 +198,7 @@ typedef enum cbx_class {
     requires valid_out: \valid(out);
     requires sep: \separated(out, a) && (\separated(out, in) || out == in);
     assigns *out;
+    CBX_TIGHT_NEAR(a, in, out)
     CBX_BOX_BEHAVIORS(a, in, out)
 */
 cbx_status cbx_transform_box_tight(const cbx_affine *a, const cbx_box *in, cbx_box *out);

@@ -2,7 +2,8 @@
  * ACSL logic of the tight mode (src/f64/cbx_tight.c): a vector of eight
  * doubles whose exact real sum is what the certification tracks, and the
  * range of a product split exactly that the compensated dot product
- * (dot_sum) takes.
+ * (dot_sum) takes: a pair hi + lo with lo at most 2^-52 |hi| (two_prod's
+ * rounding error, the product being normal).
  */
 #ifndef CBX_TIGHT_SPEC_H
 #define CBX_TIGHT_SPEC_H
@@ -14,7 +15,8 @@
 
     predicate dd_in(cbx_dd p) =
       \is_finite(p.hi) && \is_finite(p.lo)
-      && -0x1.01p1015 <= p.hi <= 0x1.01p1015 && -0x1p1000 <= p.lo <= 0x1p1000;
+      && -0x1.01p1015 <= p.hi <= 0x1.01p1015 && -0x1p1000 <= p.lo <= 0x1p1000
+      && \abs(p.lo) <= 0x1p-52 * \abs(p.hi);
 
 */
 

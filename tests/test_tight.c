@@ -40,7 +40,11 @@
  *            rows E == the fixed-point L / H of xu_row_bounds;
  *   inplace  on every 4th case cbx_transform_box_tight(a, &b, &b) gives the
  *            same status and bits as the separate output;
- *   inputs   *a and *in unchanged by the call.
+ *   inputs   *a and *in unchanged by the call;
+ *   gap      where the map and box are in the fast range and the row in
+ *            the tight mode's range (specs/cbx_tight_gap.h: trow_dom),
+ *            |E - end| <= 2^-50 |E| + 2^-96 S + 2^-1050 (the proven
+ *            accuracy, trow_near), exactly (mpq).
  *
  * Sections (N = N_THOUSANDS * 1000, default N_THOUSANDS = 30):
  *   0 hard cases (a table: permutations, 0.1 * 3, exact cancellation,

@@ -26,10 +26,10 @@
 /* ---------------------------------------------------------------------- */
 
 static const char *const c_name[NC] = { "status", "oracle", "kinds", "contain", "looser",
-                                        "optimal", "cross", "inplace", "inputs" };
+                                        "optimal", "cross", "inplace", "inputs", "gap" };
 static const char *const c_unit[NC] = { "cases", "cases", "cases", "finite ends",
                                         "finite ends", "ends outside exc.", "finite ends",
-                                        "cases", "cases" };
+                                        "cases", "cases", "ends in range" };
 
 static int case_failed;
 static char case_why[512];
@@ -82,6 +82,87 @@ static double round_E(tctx *k, const mpz_t E, int up)
     mpfr_set_emin(emin);
     mpfr_set_emax(emax);
     return d;
+}
+
+/* ---------------------------------------------------------------------- */
+/* The proven accuracy (specs/cbx_tight_gap.h)                            */
+/* ---------------------------------------------------------------------- */
+
+/* |x| <= 2^e */
+static int mag_le(double x, int e) { return fabs(x) <= ldexp(1.0, e); }
+
+/* q = |m x| (exact) */
+static void abs_prod(mpq_t q, double m, double x)
+{
+    mpq_t t;
+    mpq_init(t);
+    mpq_set_d(q, m);
+    mpq_set_d(t, x);
+    mpq_mul(q, q, t);
+    mpq_abs(q, q);
+    mpq_clear(t);
+}
+
+/* The promise's range: map and box in the fast range (map_fast, box_fast)
+ * and row i in trow_dom (every product at the box's ends with a zero
+ * factor or of magnitude in [2^-967, 2^1013], |t| <= 2^1015). */
+static int in_tight_range(tctx *k, const cbx_affine *a, const cbx_box *in, int i)
+{
+    int r, j, e;
+    mpq_t lim;
+    for (r = 0; r < 3; r++) {
+        for (j = 0; j < 3; j++)
+            if (!isfinite(a->m[r][j]) || !mag_le(a->m[r][j], 509)) return 0;
+        if (!isfinite(a->m[r][3]) || !mag_le(a->m[r][3], 1018)) return 0;
+    }
+    for (j = 0; j < 3; j++)
+        if (!isfinite(in->lo[j]) || !isfinite(in->hi[j]) || !(in->lo[j] <= in->hi[j])
+            || !mag_le(in->lo[j], 509) || !mag_le(in->hi[j], 509)) return 0;
+    if (!mag_le(a->m[i][3], 1015)) return 0;
+    mpq_init(lim);
+    for (j = 0; j < 3; j++) {
+        for (e = 0; e < 2; e++) {
+            double x = e ? in->hi[j] : in->lo[j];
+            if (a->m[i][j] == 0 || x == 0) continue;
+            abs_prod(k->qa, a->m[i][j], x);
+            mpq_set_d(lim, 0x1p-967);
+            if (mpq_cmp(k->qa, lim) < 0) { mpq_clear(lim); return 0; }
+            mpq_set_d(lim, 0x1p1013);
+            if (mpq_cmp(k->qa, lim) > 0) { mpq_clear(lim); return 0; }
+        }
+    }
+    mpq_clear(lim);
+    return 1;
+}
+
+/* |E - end| <= 2^-50 |E| + 2^-96 S + 2^-1050, S = |t| + sum_j max(|m_j l_j|,
+ * |m_j h_j|), in mpq: 1 when it holds. */
+static int within_gap(tctx *k, const cbx_affine *a, const cbx_box *in, int i, double tt)
+{
+    int j, ok;
+    mpq_t S, g, d;
+    mpq_inits(S, g, d, NULL);
+    mpq_set_d(S, fabs(a->m[i][3]));
+    for (j = 0; j < 3; j++) {
+        abs_prod(k->qa, a->m[i][j], in->lo[j]);
+        abs_prod(k->qb, a->m[i][j], in->hi[j]);
+        mpq_add(S, S, mpq_cmp(k->qa, k->qb) > 0 ? k->qa : k->qb);
+    }
+    xu_scaled_to_q(k->qa, k->E);               /* E */
+    mpq_set_d(d, tt);
+    mpq_sub(d, k->qa, d);
+    mpq_abs(d, d);                              /* |E - end| */
+    mpq_abs(g, k->qa);
+    mpq_set_d(k->qb, 0x1p-50);
+    mpq_mul(g, g, k->qb);
+    mpq_set_d(k->qb, 0x1p-96);
+    mpq_mul(S, S, k->qb);
+    mpq_add(g, g, S);
+    mpq_set_d(k->qb, 0x1p-1050);
+    mpq_add(g, g, k->qb);
+    ok = mpq_cmp(d, g) <= 0;
+    mpq_clears(S, g, d, NULL);
+    return ok;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -143,6 +224,13 @@ static void check_finite_end(tctx *k, sec *s, const cbx_affine *a, const cbx_box
         cfail(s, C_LOOSER, why);
     }
     if (cmp == 0) s->fin_exact++;
+    if (in_tight_range(k, a, in, i)) {
+        s->checked[C_GAP]++;
+        if (!within_gap(k, a, in, i, tt)) {
+            snprintf(why, sizeof why, "axis %d %s: OUTSIDE THE PROVEN GAP: end %a", i, nm, tt);
+            cfail(s, C_GAP, why);
+        }
+    }
     nb = nextafter(tt, up ? -INF : INF);
     if (!isfinite(nb)) opt = contain;
     else {

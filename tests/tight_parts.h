@@ -37,7 +37,7 @@ typedef struct tctx {
 } tctx;
 
 enum { C_STATUS, C_ORACLE, C_KINDS, C_CONTAIN, C_LOOSER, C_OPTIMAL, C_CROSS,
-       C_INPLACE, C_INPUTS, NC };
+       C_INPLACE, C_INPUTS, C_GAP, NC };
 
 typedef struct sec {
     const char *title;

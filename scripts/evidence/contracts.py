@@ -15,16 +15,17 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 
 def macro(name):
-    """The parameters and body of a contract macro of specs/cbx_logic.h
-    (CBX_BOX_BEHAVIORS, CBX_BATCH_POST)."""
-    text = open(os.path.join(ROOT, 'specs', 'cbx_logic.h'), encoding='utf-8').read()
+    """The parameters and body of a contract macro of specs/ (MACROS)."""
+    text = ''.join(open(os.path.join(ROOT, 'specs', f), encoding='utf-8').read()
+                   for f in MACRO_FILES)
     m = re.search(r'#define %s\(([^)]*)\)\s*\\\n(.*?)(?<!\\)\n' % name, text, re.S)
     params = [p.strip() for p in m.group(1).split(',')]
     body = re.sub(r'\\\n', '\n', m.group(2))
     return params, body
 
 
-MACROS = ('CBX_BOX_BEHAVIORS', 'CBX_BATCH_POST')
+MACROS = ('CBX_BOX_BEHAVIORS', 'CBX_BATCH_POST', 'CBX_TIGHT_NEAR')
+MACRO_FILES = ('cbx_logic.h', 'cbx_tight_gap.h')
 
 
 def expand(contract):

@@ -24,6 +24,7 @@
     assigns \nothing;
     ensures rng: 0 <= \result <= 2;
     ensures in: \result == 2 ==> \is_finite(x) && nb <= x <= b;
+    ensures all: (\is_finite(x) && nb <= x <= b) ==> \result == 2;
 */
 static inline int cbx_in2(cbx_fp x, cbx_fp nb, cbx_fp b)
 {
@@ -35,16 +36,17 @@ static inline int cbx_in2(cbx_fp x, cbx_fp nb, cbx_fp b)
     assigns \nothing;
     ensures rng: 0 <= \result <= 3;
     ensures in: \result == 3 ==> \is_finite(l) && \is_finite(h) && nb <= l && l <= h && h <= b;
+    ensures all: (\is_finite(l) && \is_finite(h) && nb <= l && l <= h && h <= b) ==> \result == 3;
 */
 static inline int cbx_ord3(cbx_fp l, cbx_fp h, cbx_fp nb, cbx_fp b)
 {
     return (l >= nb) + (l <= h) + (h <= b);
 }
 
-/* 1 when the map is in the fast range (specs: map_fast). */
+/* 1 when the map is in the fast range (specs: map_fast), else 0. */
 /*@ requires valid: \valid_read(a);
     assigns \nothing;
-    ensures fast: \result != 0 ==> map_fast(a);
+    ensures fast: \result != 0 <==> map_fast(a);
 */
 static inline int cbx_map_fast(const cbx_affine *a)
 {
@@ -57,10 +59,10 @@ static inline int cbx_map_fast(const cbx_affine *a)
     return n == 24;
 }
 
-/* 1 when the box is in the fast range (specs: box_fast). */
+/* 1 when the box is in the fast range (specs: box_fast), else 0. */
 /*@ requires valid: \valid_read(b);
     assigns \nothing;
-    ensures fast: \result != 0 ==> box_fast(b);
+    ensures fast: \result != 0 <==> box_fast(b);
 */
 static inline int cbx_box_fast(const cbx_box *b)
 {

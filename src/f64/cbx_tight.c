@@ -173,10 +173,6 @@ static int eft_ok(double m, double v)
 /* A candidate and whether it is certified. */
 typedef struct cand { double c; int ok; } cand;
 
-/* dot_sum's "no certificate": below every end it could certify (those are
- * above -2^1018), so max(r, CBX_NONE) == r for every finite r. */
-#define CBX_NONE (-0x1.fffffffffffffp1023)
-
 /* The fast certificate: two distillation passes and one sign decision on
  * the residual.  The first pass leaves the rounded sum s in v7; s moves
  * out (vsum(z) = E - s) and a second pass brings the residual's rounded
@@ -284,6 +280,7 @@ static double tighten_core(double r, cbx_vec8 y)
     assigns \nothing;
     ensures rng: 0 <= \result <= 1;
     ensures ok: \result != 0 ==> (m*v == 0 || 0x1p-969 <= \abs(m*v) <= 0x1p1015);
+    ensures all: tprod(m, v) ==> \result == 1;
 */
 static int fast_ok(double m, double v)
 {
@@ -292,8 +289,18 @@ static int fast_ok(double m, double v)
     /*@ assert hi: p <= 0x1p1014 ==> \abs(m*v) <= 0x1p1015; */
     /*@ assert z0: m == 0 ==> m*v == 0; */
     /*@ assert z1: v == 0 ==> m*v == 0; */
+    /*@ assert pl: 0x1p-967 <= \abs(m*v) ==> p >= 0x1p-968; */
+    /*@ assert ph: \abs(m*v) <= 0x1p1013 ==> p <= 0x1p1014; */
     /* counts, not && and ||: no branch on the product's sign or size */
-    return 2 * ((m == 0.0) + (v == 0.0)) + (p >= 0x1p-968) + (p <= 0x1p1014) >= 2;
+    int z = (m == 0.0) + (v == 0.0);
+    int n = (p >= 0x1p-968) + (p <= 0x1p1014);
+    /*@ assert az: (m == 0 || v == 0) ==> z >= 1; */
+    /*@ assert an: (0x1p-967 <= \abs(m*v) <= 0x1p1013) ==> n == 2; */
+    /*@ assert nn: 0 <= z <= 2 && 0 <= n <= 2; */
+    /*@ assert c2: (m == 0 || v == 0) ==> z + z + n >= 2; */
+    /*@ assert c3: (0x1p-967 <= \abs(m*v) <= 0x1p1013) ==> z + z + n >= 2; */
+    /*@ assert c4: tprod(m, v) ==> (m == 0 || v == 0 || (0x1p-967 <= \abs(m*v) <= 0x1p1013)); */
+    return z + z + n >= 2;
 }
 
 /* Six doubles of magnitude at most M summed to nearest: five additions,
@@ -358,6 +365,18 @@ static cbx_dd dd_neg(cbx_dd a)
     return r;
 }
 
+/* Lemma function (empty body): two_prod's low part is the high part's
+ * rounding error, at most 2^-53 of the product plus the subnormal
+ * spacing (proved alone: in dot_prods' context the provers time out). */
+/*@ requires fin: \is_finite(hi) && \is_finite(lo);
+    requires rng: -0x1p1018 <= m*v <= 0x1p1018;
+    requires rn: hi == (double)(m*v);
+    requires ex: hi + lo == m*v;
+    assigns \nothing;
+    ensures err: \abs(lo) <= 0x1p-53 * \abs(m*v) + 0x1p-1074;
+*/
+static void rn_err(double m, double v, double hi, double lo) { (void)m; (void)v; (void)hi; (void)lo; }
+
 /* The three products of an end split exactly (two_prod), when all three
  * are in dot_sum's range; ok == 0 otherwise. */
 typedef struct prods { cbx_dd p0, p1, p2; int ok; } prods;
@@ -370,6 +389,8 @@ typedef struct prods { cbx_dd p0, p1, p2; int ok; } prods;
     ensures ex: \result.ok != 0 ==> (\result.p0.hi + \result.p0.lo == m0*v0
                                     && \result.p1.hi + \result.p1.lo == m1*v1
                                     && \result.p2.hi + \result.p2.lo == m2*v2);
+    ensures all: (tprod(m0, v0) && tprod(m1, v1) && tprod(m2, v2) && -0x1p1015 <= t <= 0x1p1015)
+                 ==> \result.ok != 0;
 */
 static prods dot_prods(double m0, double m1, double m2, double t, double v0, double v1, double v2)
 {
@@ -381,8 +402,14 @@ static prods dot_prods(double m0, double m1, double m2, double t, double v0, dou
         return q;
     }
     q.p0 = cbx_two_prod(m0, v0);
+    rn_err(m0, v0, q.p0.hi, q.p0.lo);
+    /*@ assert r0: \abs(q.p0.lo) <= 0x1p-53 * \abs(m0*v0) + 0x1p-1074; */
     q.p1 = cbx_two_prod(m1, v1);
+    rn_err(m1, v1, q.p1.hi, q.p1.lo);
+    /*@ assert r1: \abs(q.p1.lo) <= 0x1p-53 * \abs(m1*v1) + 0x1p-1074; */
     q.p2 = cbx_two_prod(m2, v2);
+    rn_err(m2, v2, q.p2.hi, q.p2.lo);
+    /*@ assert r2: \abs(q.p2.lo) <= 0x1p-53 * \abs(m2*v2) + 0x1p-1074; */
     q.ok = 1;
     return q;
 }
@@ -394,34 +421,50 @@ static prods dot_prods(double m0, double m1, double m2, double t, double v0, dou
  * the rest.  e >= d certifies c <= E; e < -d with c - pred(c) >= 1.125
  * (d - e) (rounded up, on the exact difference) certifies pred(c); a tail
  * of zeros gives E = s3.  Which case holds is a coin toss: counts and
- * selects, and one branch, taken when none holds (rare).  CBX_NONE: no
- * certificate. */
+ * selects, and one branch, taken when none holds (rare).  ok != 0: the
+ * certified end (the exact end rounded down: the tests check it).  In
+ * every case c is at least f = c - (2^-52 |c| + 2 d), rounded: below E,
+ * as |e| <= 2^-53 |c + e|, and within 2^-50 |E| + 4 d of it (near). */
 /*@ requires fin: \is_finite(t);
     requires rng: dd_in(p0) && dd_in(p1) && dd_in(p2) && -0x1p1015 <= t <= 0x1p1015;
     assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures below: \result != CBX_NONE ==> \result <= p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t;
+    ensures fin: \is_finite(\result.c);
+    ensures below: \result.c <= p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t;
+    ensures near: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - \result.c
+                  <= 0x1p-50 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t)
+                     + 0x1.1p-97 * (\abs(t) + \abs(p0.hi) + \abs(p1.hi) + \abs(p2.hi)) + 0x1p-1057;
 */
-static double dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
+static cand dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
 {
+    cand res;
     cbx_dd s1 = cbx_two_sum(t, p0.hi);
     /*@ assert q1: \abs(s1.hi) <= 0x1.04p1016 && \abs(s1.lo) <= 0x1p1000; */
+    /*@ assert a1: \abs(s1.lo) <= 0x1p-53 * (\abs(t) + \abs(p0.hi)) + 0x1p-1074
+                   && \abs(s1.hi) <= 0x1.0000000000001p0 * (\abs(t) + \abs(p0.hi)) + 0x1p-1074; */
     cbx_dd s2 = cbx_two_sum(s1.hi, p1.hi);
     /*@ assert q2: \abs(s2.hi) <= 0x1.9p1016 && \abs(s2.lo) <= 0x1p1000; */
+    /*@ assert a2: \abs(s2.lo) <= 0x1p-53 * (\abs(s1.hi) + \abs(p1.hi)) + 0x1p-1074
+                   && \abs(s2.hi) <= 0x1.0000000000001p0 * (\abs(s1.hi) + \abs(p1.hi)) + 0x1p-1074; */
     cbx_dd s3 = cbx_two_sum(s2.hi, p2.hi);
     /*@ assert q3: \abs(s3.hi) <= 0x1.1p1017 && \abs(s3.lo) <= 0x1p1000; */
+    /*@ assert a3: \abs(s3.lo) <= 0x1p-53 * (\abs(s2.hi) + \abs(p2.hi)) + 0x1p-1074; */
     /*@ assert ex: s3.hi + (p0.lo + p1.lo + p2.lo + s1.lo + s2.lo + s3.lo) == p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t; */
     double mx = cbx_max2(cbx_max2(cbx_max2(cbx_abs(p0.lo), cbx_abs(p1.lo)),
                                   cbx_max2(cbx_abs(p2.lo), cbx_abs(s1.lo))),
                          cbx_max2(cbx_abs(s2.lo), cbx_abs(s3.lo)));
+    /*@ assert mxs: mx <= 0x1.01p-52 * (\abs(t) + \abs(p0.hi) + \abs(p1.hi) + \abs(p2.hi)) + 0x1p-1072; */
     double r = sum6(p0.lo, p1.lo, p2.lo, s1.lo, s2.lo, s3.lo, mx);
     double d = cbx_add_rn(cbx_mul_rn(mx, 0x1p-47), 0x1p-1060);
     /*@ assert dd: 0x1p-48 * mx + 0x1.2p-1071 <= d; */
+    /*@ assert du: d <= 0x1.01p-47 * mx + 0x1.01p-1060; */
     cbx_dd ce = cbx_two_sum(s3.hi, r);
     double c = ce.hi;
     double e = ce.lo;
     /*@ assert w: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - c >= e - d; */
+    /*@ assert wu: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - c <= e + d; */
     /*@ assert cr: -0x1p1018 <= c <= 0x1p1018; */
+    /*@ assert ea: \abs(e) <= 0x1p-53 * \abs(c + e) + 0x1p-1074; */
+    /*@ assert eb: \abs(e) <= 0x1.01p-53 * \abs(c) + 0x1p-1073; */
     double p = neighbour(c, 1);
     cbx_dd h = cbx_two_sum(c, -p);
     double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);
@@ -429,11 +472,29 @@ static double dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
     int dn = (e < nd) + (h.lo == 0.0) + (g <= h.hi) == 3;
     /*@ assert w2: dn != 0 ==> p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t >= p; */
     /*@ assert z: mx == 0 ==> s3.hi == p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t; */
-    if ((e >= d) + dn + (mx == 0.0) == 0) {
-        return CBX_NONE;
+    /* the lower end that holds in every case */
+    double k1 = cbx_mul_rn(cbx_abs(c), 0x1.01p-52);
+    double k2 = cbx_add_rn(d, d);
+    double k = cbx_add_rn(k1, k2);
+    /*@ assert kl: k >= 0x1.009p-52 * \abs(c) + 0x1.ffp0 * d; */
+    /*@ assert ku: k <= 0x1.02p-52 * \abs(c) + 0x1.01p1 * d; */
+    double f = cbx_sub_rn(c, k);
+    /*@ assert fu: f <= c - k + 0x1p-53 * (\abs(c) + k) + 0x1p-1074; */
+    /*@ assert fl: f >= c - k - 0x1p-53 * (\abs(c) + k) - 0x1p-1074; */
+    /*@ assert fb: f <= p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t; */
+    /*@ assert fc: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - f <= 0x1.03p-51 * \abs(c) + 0x1.9p1 * d; */
+    /*@ assert cE: \abs(c) <= 0x1.0000001p0 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t) + 0x1.01p0 * d; */
+    /*@ assert fE: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - f
+                   <= 0x1p-50 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t) + 4 * d; */
+    res.ok = (e >= d) + dn + (mx == 0.0) != 0;
+    if (res.ok == 0) {
+        res.c = f;
+        return res;
     }
     double x = e >= d ? c : p;
-    return mx == 0.0 ? s3.hi : x;
+    double y = mx == 0.0 ? s3.hi : x;
+    res.c = cbx_max2(y, f);
+    return res;
 }
 
 /* The seven exact terms of t + m.v, negated when neg != 0; ok == 0 when a
@@ -471,29 +532,37 @@ static terms exact_terms(double m0, double m1, double m2, double t,
     return r;
 }
 
-/* The largest certified double <= t + m.v, or r when none beats r. */
+/* The largest certified double <= t + m.v, or r when none beats r; on
+ * dot_sum's range, at least dot_sum's lower end (near). */
 /*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
     requires finr: \is_finite(r);
     requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2) && -0x1p1018 <= t <= 0x1p1018;
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures same_or_better: \result == r || (r < \result && \result <= m0*v0 + m1*v1 + m2*v2 + t);
+    ensures near: (tprod(m0, v0) && tprod(m1, v1) && tprod(m2, v2) && -0x1p1015 <= t <= 0x1p1015)
+                  ==> m0*v0 + m1*v1 + m2*v2 + t - \result
+                      <= tgap(m0*v0 + m1*v1 + m2*v2 + t, \abs(t) + \abs(m0*v0) + \abs(m1*v1) + \abs(m2*v2));
 */
 static double tighten_lo(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
+    double b = r;
     prods q = dot_prods(m0, m1, m2, t, v0, v1, v2);
-    if (q.ok) {
-        double x = dot_sum(q.p0, q.p1, q.p2, t);
-        if (x != CBX_NONE) {
-            return x > r ? x : r;
+    if (q.ok != 0) {
+        cand x = dot_sum(q.p0, q.p1, q.p2, t);
+        /*@ assert hs: \abs(q.p0.hi) + \abs(q.p1.hi) + \abs(q.p2.hi)
+                       <= 0x1.0000000000002p0 * (\abs(m0*v0) + \abs(m1*v1) + \abs(m2*v2)); */
+        b = x.c > r ? x.c : r;
+        if (x.ok != 0) {
+            return b;
         }
     }
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 0);
     if (!e.ok) {
-        return r;
+        return b;
     }
-    return tighten_core(r, e.y);
+    return tighten_core(b, e.y);
 }
 
 /* The smallest certified double >= t + m.v, or r: the same on -(t + m.v). */
@@ -503,23 +572,30 @@ static double tighten_lo(double r, double m0, double m1, double m2, double t,
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures same_or_better: \result == r || (\result < r && m0*v0 + m1*v1 + m2*v2 + t <= \result);
+    ensures near: (tprod(m0, v0) && tprod(m1, v1) && tprod(m2, v2) && -0x1p1015 <= t <= 0x1p1015)
+                  ==> \result - (m0*v0 + m1*v1 + m2*v2 + t)
+                      <= tgap(m0*v0 + m1*v1 + m2*v2 + t, \abs(t) + \abs(m0*v0) + \abs(m1*v1) + \abs(m2*v2));
 */
 static double tighten_hi(double r, double m0, double m1, double m2, double t,
                          double v0, double v1, double v2)
 {
+    double b = r;
     prods q = dot_prods(m0, m1, m2, t, v0, v1, v2);
-    if (q.ok) {
-        double f = dot_sum(dd_neg(q.p0), dd_neg(q.p1), dd_neg(q.p2), -t);
-        if (f != CBX_NONE) {
-            double y = -f;
-            return y < r ? y : r;
+    if (q.ok != 0) {
+        cand f = dot_sum(dd_neg(q.p0), dd_neg(q.p1), dd_neg(q.p2), -t);
+        /*@ assert hs: \abs(q.p0.hi) + \abs(q.p1.hi) + \abs(q.p2.hi)
+                       <= 0x1.0000000000002p0 * (\abs(m0*v0) + \abs(m1*v1) + \abs(m2*v2)); */
+        double y = -f.c;
+        b = y < r ? y : r;
+        if (f.ok != 0) {
+            return b;
         }
     }
     terms e = exact_terms(m0, m1, m2, t, v0, v1, v2, 1);
     if (!e.ok) {
-        return r;
+        return b;
     }
-    double x = tighten_core(-r, e.y);
+    double x = tighten_core(-b, e.y);
     return -x;
 }
 
@@ -637,19 +713,29 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
     ensures fin: \is_finite(\result);
     ensures val: \result == l || \result == h;
     ensures col: \forall real p; ext_in(p, l, h) ==> m*\result <= m*p;
+    ensures tm: m*\result == tmin(m, l, h);
+    ensures tg: \abs(m*\result) <= tmag(m, l, h);
 */
 static double vsel_lo(double m, double l, double h)
 {
     double v = m >= 0.0 ? l : h;
+    /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
     /* the lemmas on v itself: no product of v to rewrite as one of l */
     if (m > 0.0) {
         pos_below(m, v, h);
+        /*@ assert ip: nn_prod(m, h - v); */
+        /*@ assert dp: m*(h - v) == m*h - m*v; */
+        /*@ assert tp: m*v == tmin(m, l, h) && \abs(m*v) <= tmag(m, l, h); */
     } else if (m < 0.0) {
         neg_below(m, l, v);
+        /*@ assert in: nn_prod(-m, v - l); */
+        /*@ assert dn: (-m)*(v - l) == m*l - m*v; */
+        /*@ assert tn: m*v == tmin(m, l, h) && \abs(m*v) <= tmag(m, l, h); */
+    } else {
+        /*@ assert m0: m == 0; */
+        /*@ assert m1: m*v == 0 && m*l == 0 && m*h == 0; */
+        /*@ assert t0: m*v == tmin(m, l, h) && \abs(m*v) <= tmag(m, l, h); */
     }
-    /*@ assert vp: m >= 0 ==> v == l; */
-    /*@ assert vn: m < 0 ==> v == h; */
-    /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
     return v;
 }
 
@@ -658,19 +744,29 @@ static double vsel_lo(double m, double l, double h)
     ensures fin: \is_finite(\result);
     ensures val: \result == l || \result == h;
     ensures col: \forall real p; ext_in(p, l, h) ==> m*\result >= m*p;
+    ensures tm: m*\result == tmax(m, l, h);
+    ensures tg: \abs(m*\result) <= tmag(m, l, h);
 */
 static double vsel_hi(double m, double l, double h)
 {
     double v = m >= 0.0 ? h : l;
+    /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
     /* the lemmas on v itself: no product of v to rewrite as one of h */
     if (m > 0.0) {
         pos_above(m, l, v);
+        /*@ assert ip: nn_prod(m, v - l); */
+        /*@ assert dp: m*(v - l) == m*v - m*l; */
+        /*@ assert tp: m*v == tmax(m, l, h) && \abs(m*v) <= tmag(m, l, h); */
     } else if (m < 0.0) {
         neg_above(m, v, h);
+        /*@ assert in: nn_prod(-m, h - v); */
+        /*@ assert dn: (-m)*(h - v) == m*v - m*h; */
+        /*@ assert tn: m*v == tmax(m, l, h) && \abs(m*v) <= tmag(m, l, h); */
+    } else {
+        /*@ assert m0: m == 0; */
+        /*@ assert m1: m*v == 0 && m*l == 0 && m*h == 0; */
+        /*@ assert t0: m*v == tmax(m, l, h) && \abs(m*v) <= tmag(m, l, h); */
     }
-    /*@ assert vp: m >= 0 ==> v == h; */
-    /*@ assert vn: m < 0 ==> v == l; */
-    /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
     return v;
 }
 
@@ -688,6 +784,8 @@ static double vsel_hi(double m, double l, double h)
     requires rt: -CBX_RT <= t <= CBX_RT;
     assigns \nothing;
     ensures sound: axis_sound_s(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures near: trow_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+                  ==> trow_near(\result.lo, \result.hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
 static tight_result tight_axis_fast(double lo, double hi, double m0, double m1, double m2, double t,
                                     double l0, double h0, double l1, double h1, double l2, double h2)
@@ -701,6 +799,8 @@ static tight_result tight_axis_fast(double lo, double hi, double m0, double m1, 
     double w0 = vsel_hi(m0, l0, h0);
     double w1 = vsel_hi(m1, l1, h1);
     double w2 = vsel_hi(m2, l2, h2);
+    /*@ assert dl: trow_dom(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+                   ==> (tprod(m0, v0) && tprod(m1, v1) && tprod(m2, v2) && tprod(m0, w0) && tprod(m1, w1) && tprod(m2, w2)); */
     double c = tighten_lo(lo, m0, m1, m2, t, v0, v1, v2);
     double d = tighten_hi(hi, m0, m1, m2, t, w0, w1, w2);
     if (c > lo) {
@@ -722,6 +822,7 @@ static tight_result tight_axis_fast(double lo, double hi, double m0, double m1, 
     requires fast: map_fast(a) && box_fast(in);
     assigns *out;
     CBX_FAST_POST(a, in, out)
+    CBX_TIGHT_NEAR(a, in, out)
 */
 static cbx_status tight_box_fast(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
