@@ -426,7 +426,12 @@ def standard(raw, b):
              '--cppcheck-build-dir=' + cb,
              '--inline-suppr', *INCS, '--quiet', '-D__GNUC__', '-DFLT_EVAL_METHOD=0',
              '--template={file}:{line}:{severity}:{id}:{message}'] + rel, check=False)
-    tidy_checks = ('-*,clang-analyzer-*,bugprone-*,cert-*,misc-*,portability-*,performance-*,'
+    # clang-analyzer-valist.* off: the sources have no variadic function
+    # (MISRA 17.1, cppcheck above), and clang 14's checker reported an
+    # uninitialised va_list at two q_dot calls of src/f64/cbx_trs.c in one
+    # of two identical packs made side by side (2026-11-29), not the other
+    tidy_checks = ('-*,clang-analyzer-*,-clang-analyzer-valist.*,bugprone-*,cert-*,misc-*,'
+                   'portability-*,performance-*,'
                    'readability-*,-readability-magic-numbers,-readability-identifier-length')
     ct = sh(['clang-tidy', '--quiet', '-checks=' + tidy_checks] + rel
             + ['--', '-std=c99', *INCS, '-ffp-contract=off'], check=False)
