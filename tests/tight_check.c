@@ -141,7 +141,7 @@ static int within_gap(tctx *k, const cbx_affine *a, const cbx_box *in, int i, do
 {
     int j, ok;
     mpq_t S, g, d;
-    mpq_inits(S, g, d, NULL);
+    mpq_inits(S, g, d, (mpq_ptr)0);
     mpq_set_d(S, fabs(a->m[i][3]));
     for (j = 0; j < 3; j++) {
         abs_prod(k->qa, a->m[i][j], in->lo[j]);
@@ -161,7 +161,7 @@ static int within_gap(tctx *k, const cbx_affine *a, const cbx_box *in, int i, do
     mpq_set_d(k->qb, 0x1p-1050);
     mpq_add(g, g, k->qb);
     ok = mpq_cmp(d, g) <= 0;
-    mpq_clears(S, g, d, NULL);
+    mpq_clears(S, g, d, (mpq_ptr)0);
     return ok;
 }
 
@@ -230,6 +230,7 @@ static void check_finite_end(tctx *k, sec *s, const cbx_affine *a, const cbx_box
             snprintf(why, sizeof why, "axis %d %s: OUTSIDE THE PROVEN GAP: end %a", i, nm, tt);
             cfail(s, C_GAP, why);
         }
+        if (!within_gap(k, a, in, i, bt)) s->gap_kernel_out++; /* the check's teeth */
     }
     nb = nextafter(tt, up ? -INF : INF);
     if (!isfinite(nb)) opt = contain;
@@ -469,6 +470,7 @@ void tgt_sec_add(sec *t, const sec *s)
     if (s->base_ulps_max > t->base_ulps_max) t->base_ulps_max = s->base_ulps_max;
     t->base_ulps_sum += s->base_ulps_sum;
     t->nc_ends += s->nc_ends;
+    t->gap_kernel_out += s->gap_kernel_out;
     if (s->near968_maxlog > t->near968_maxlog) t->near968_maxlog = s->near968_maxlog;
     if (s->tiny_e_maxlog > t->tiny_e_maxlog) t->tiny_e_maxlog = s->tiny_e_maxlog;
     t->exc += s->exc;
@@ -506,6 +508,9 @@ void tgt_sec_print(const sec *s)
            s->nc_ends ? s->base_ulps_sum / (double)s->nc_ends : 0.0);
     printf("  containment failures: %ld; optimality failures outside the exception: %ld "
            "(of %ld ends)\n", s->fail[C_CONTAIN], s->fail[C_OPTIMAL], s->checked[C_OPTIMAL]);
+    printf("  proven gap (2^-50 |E| + 2^-96 S + 2^-1050): %ld of %ld ends in range outside it; "
+           "cbx_transform_box's end outside it on %ld of them (the check can fail)\n",
+           s->fail[C_GAP], s->checked[C_GAP], s->gap_kernel_out);
     if (s->fail[C_OPTIMAL])
         printf("    by cause: a nonzero product in [2^-968, 2^-967) %ld (largest such product "
                "< 2^%ld), 0 < |E| < 2^-900 %ld (largest such |E| < 2^%ld), other %ld\n",

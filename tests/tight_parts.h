@@ -48,6 +48,9 @@ typedef struct sec {
     long fin_exact;              /* E is a double: the end equals it        */
     long tightened;              /* tight end != cbx_transform_box's end     */
     long nc_ends;                /* ends with 4 |E| >= S > 0 (no cancellation) */
+    long gap_kernel_out;         /* ends in the gap check's range where
+                                    cbx_transform_box's end is outside the
+                                    gap (the check's teeth)               */
     double base_ulps_max, base_ulps_sum; /* there: cbx_transform_box's end
                                     minus the tight one, in ulps of E      */
     long exc, exc_tiny, exc_big; /* ends in the documented exception         */
