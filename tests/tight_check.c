@@ -136,18 +136,15 @@ static int in_tight_range(tctx *k, const cbx_affine *a, const cbx_box *in, int i
 }
 
 /* |E - end| <= 2^-50 |E| + 2^-96 S + 2^-1050, S = |t| + sum_j max(|m_j l_j|,
- * |m_j h_j|), in mpq: 1 when it holds. */
+ * |m_j h_j|) (xu_row_bounds' S: the row is full in the range), in mpq: 1
+ * when it holds. */
 static int within_gap(tctx *k, const cbx_affine *a, const cbx_box *in, int i, double tt)
 {
-    int j, ok;
+    int ok;
     mpq_t S, g, d;
     mpq_inits(S, g, d, (mpq_ptr)0);
-    mpq_set_d(S, fabs(a->m[i][3]));
-    for (j = 0; j < 3; j++) {
-        abs_prod(k->qa, a->m[i][j], in->lo[j]);
-        abs_prod(k->qb, a->m[i][j], in->hi[j]);
-        mpq_add(S, S, mpq_cmp(k->qa, k->qb) > 0 ? k->qa : k->qb);
-    }
+    xu_row_bounds(&k->x, a, in, i);
+    xu_scaled_to_q(S, k->x.S);
     xu_scaled_to_q(k->qa, k->E);               /* E */
     mpq_set_d(d, tt);
     mpq_sub(d, k->qa, d);
