@@ -404,8 +404,9 @@ cbx_status cbx_transform_box_chain(const cbx_prepared *p, size_t n, const cbx_bo
  * the excess about halves per extra level (docs/guide.md: 3.4% of the
  * box's side at 16 cells for a 90-degree turn).  Tested against MPFR
  * (tests/test_trs.c); partly proven: each cell's box is
- * cbx_transform_box_imat's, and its interval arithmetic and rotation
- * matrices are proven; the quaternion path is not yet.  Status and
+ * cbx_transform_box_imat's, and its interval arithmetic, rotation
+ * matrices, quaternion normalisation and arc boxes are proven; the
+ * bisection walk and the cells' loop are not yet.  Status and
  * output:
  *   NaN in a keyframe, s0, s1 or *in; s0, s1 not 0 <= s0 <= s1 <= 1;
  *   depth > 16; a zero quaternion      -> CBX_EINVAL, *out the whole space

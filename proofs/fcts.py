@@ -23,8 +23,9 @@ follow the layers of src/:
              minus the interval-matrix unit's (group imat)
     imat     the interval-matrix unit: src/f64/cbx_imat.c, src/f64/cbx_ikernel.h
     trs      the proven part of the rotation motion (proofs/trs.c): the
-             interval arithmetic of src/f64/cbx_iv.h, the rotations of
-             quaternion boxes of src/f64/cbx_quat.h and the cells' interval
+             interval arithmetic of src/f64/cbx_iv.h, the rotations,
+             normalisation and arc boxes of quaternion boxes of
+             src/f64/cbx_quat.h and the cells' interval
              matrices of src/f64/cbx_cell.h
     psph     a ball under a projective map (proofs/psph.c): the functions
              of src/f64/cbx_psph.c and of the enclosures they share,

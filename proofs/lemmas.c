@@ -11,6 +11,7 @@
 #define CBX_CHAIN_LEMMAS 1
 #define CBX_PROJ_LEMMAS 1
 #define CBX_IV_LEMMAS 1
+#define CBX_IV_QUOT_LEMMAS 1
 #include "certbox.h"
 #include "cbx_iv_logic.h"
 #include "cbx_quat_logic.h"

@@ -191,6 +191,17 @@ case_ tight-vertex-swapped src/f64/cbx_tight.c vsel_lo proofs/all.c z,ip,dp,tp,i
 case_ tight-fast-is-transform-box src/f64/cbx_tight.c cbx_transform_box_tight proofs/all.c near0,near1,near2 'near' \
   "        return tight_box_fast(a, in, out);" \
   "        return cbx_transform_box(a, in, out);" &
+# 30. the rotation's arc box without the tangents' meeting point (unsound:
+#    the arc bulges out of the box of its two ends; the arc's lower end
+#    must fail)
+case_ arc-box-ends-only src/f64/cbx_quat.h arc_comp proofs/trs.c b,in 'assert_b\|ensures_in' \
+  "    cbx_iv h = iv_hull(iv_hull(a, b), q);" \
+  "    cbx_iv h = iv_hull(a, b);" - &
+# 31. a normalised component's lower end taken from the quotient's upper
+#    end (unsound: the containment must fail)
+case_ normalise-lo-from-hi src/f64/cbx_quat.h unit_quot proofs/trs.c ok,in ensures_in \
+  "    r.lo = cbx_max2(cbx_min2(d.lo, 1.0), -1.0);" \
+  "    r.lo = cbx_max2(cbx_min2(d.hi, 1.0), -1.0);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -45,6 +45,12 @@
     //   lo y <= x <= hi y (x / y in [lo, hi], multiplied out; y > 0)
     predicate iv_quot(real lo, real hi, real al, real ah, real bl, real bh) =
       \forall real x, y; al <= x <= ah && bl <= y <= bh ==> lo*y <= x <= hi*y;
+    //   one point of it: lo y <= x <= hi y
+    predicate quot_at(real lo, real hi, real x, real y) = lo*y <= x <= hi*y;
+    //   k x in [lo, hi] (a multiple of x: a vector before it is normalised)
+    predicate sc_has(real lo, real hi, real x, real k) = lo <= k*x <= hi;
+    //   lo <= x (the provers' division by k > 0, asked for by name)
+    predicate divk(real k, real lo, real x) = 0 < k && lo*k <= k*x ==> lo <= x;
     //   x0 + s D in [lo, hi] for every s in [a, b] (a linear path)
     predicate lerp_in(real lo, real hi, real x0, real d, real a, real b) =
       \forall real s; a <= s <= b ==> lo <= x0 + s*d <= hi;
@@ -115,6 +121,27 @@
     lemma it_sub_all: \forall real ml, mh, sl, sh, l, h; it_sub(ml, mh, sl, sh, l, h);
     lemma iv_quot_ends: \forall real lo, hi, al, ah, bl, bh;
       0 < bl && lo*bl <= al && lo*bh <= al && ah <= hi*bl && ah <= hi*bh ==> iv_quot(lo, hi, al, ah, bl, bh);
+*/
+#endif
+
+/* The steps of the quaternion path's normalisation (src/f64/cbx_quat.h):
+ * compiled with CBX_IV_QUOT_LEMMAS, in proofs/lemmas.c (proven there) and
+ * proofs/trs.c (used there) only, so that the projective jobs, which use
+ * this file's other lemmas, do not carry them. */
+#ifdef CBX_IV_QUOT_LEMMAS
+/*@
+    lemma iv_quot_at: \forall real lo, hi, al, ah, bl, bh, x, y;
+      iv_quot(lo, hi, al, ah, bl, bh) && al <= x <= ah && bl <= y <= bh ==> quot_at(lo, hi, x, y);
+    lemma divk_all: \forall real k, lo, x; divk(k, lo, x);
+    // x in [lo, hi] when k x / k is: the quotient of a multiple of x by k
+    lemma quot_sc_h: \forall real lo, hi, al, ah, bl, bh, x, k;
+      iv_quot(lo, hi, al, ah, bl, bh) && sc_has(al, ah, x, k) && bl <= k <= bh && 0 < bl
+      && quot_at(lo, hi, k*x, k) && divk(k, lo, x) && divk(k, -hi, -x) ==> lo <= x <= hi;
+    lemma quot_sc: \forall real lo, hi, al, ah, bl, bh, x, k;
+      iv_quot(lo, hi, al, ah, bl, bh) && sc_has(al, ah, x, k) && bl <= k <= bh && 0 < bl ==> lo <= x <= hi;
+    // one point of a square root's enclosure (as ps_root_at, specs/cbx_psph.h)
+    lemma iv_root_at: \forall real lo, hi, l, h, y;
+      iv_root(lo, hi, l, h) && 0 <= y && sq_at(l, h, y) ==> lo <= y <= hi;
 */
 #endif
 

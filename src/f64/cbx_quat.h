@@ -5,7 +5,11 @@
  * quaternion (x, y, z, w) of the box (specs/cbx_quat_logic.h: rot00 ..
  * rot22); each entry is the interval evaluation of its formula through
  * src/f64/cbx_iv.h, cut to [-1, 1] (where every entry of a rotation lies).
- * Proven in job T64 (proofs/trs.c).
+ * Also the quaternion path's steps: normalisation (every unit u with a
+ * positive multiple in the box), sums, negation, hulls, and the box of
+ * the shorter great arc between two boxes (every unit l p + m r, l, m >= 0:
+ * specs/cbx_quat_logic.h, arc_pt, lemma arc_lo).  Proven in job T64
+ * (proofs/trs.c).
  */
 #ifndef CBX_QUAT_H
 #define CBX_QUAT_H
@@ -43,6 +47,22 @@ typedef struct trs_rot { cbx_iv e[3][3]; } trs_rot;
     predicate q_unit_box(trs_q q) =
       iv_ok1(q.c[0]) && iv_ok1(q.c[1]) && iv_ok1(q.c[2]) && iv_ok1(q.c[3])
       && q.c[0].lo <= q.c[0].hi && q.c[1].lo <= q.c[1].hi && q.c[2].lo <= q.c[2].hi && q.c[3].lo <= q.c[3].hi;
+    // every component finite, within [-m, m] and ordered
+    predicate q_rng(trs_q q, real m) =
+      \is_finite(q.c[0].lo) && \is_finite(q.c[0].hi) && \is_finite(q.c[1].lo) && \is_finite(q.c[1].hi)
+      && \is_finite(q.c[2].lo) && \is_finite(q.c[2].hi) && \is_finite(q.c[3].lo) && \is_finite(q.c[3].hi)
+      && iv_rng(q.c[0].lo, q.c[0].hi, m) && iv_rng(q.c[1].lo, q.c[1].hi, m)
+      && iv_rng(q.c[2].lo, q.c[2].hi, m) && iv_rng(q.c[3].lo, q.c[3].hi, m)
+      && q.c[0].lo <= q.c[0].hi && q.c[1].lo <= q.c[1].hi && q.c[2].lo <= q.c[2].hi && q.c[3].lo <= q.c[3].hi;
+    // k (x, y, z, w) lies in the box q (a multiple of a unit vector)
+    predicate q_sc_has(trs_q q, real k, real x, real y, real z, real w) =
+      sc_has(q.c[0].lo, q.c[0].hi, x, k) && sc_has(q.c[1].lo, q.c[1].hi, y, k)
+      && sc_has(q.c[2].lo, q.c[2].hi, z, k) && sc_has(q.c[3].lo, q.c[3].hi, w, k);
+    // the component l p + m r of a point of the arc from p in a to r in b
+    // (c = p.r, 1 + c in den)
+    predicate arc_in(cbx_iv a, cbx_iv b, cbx_iv den, real p, real r, real c, real l, real m) =
+      iv_has(a.lo, a.hi, p) && iv_has(b.lo, b.hi, r) && iv_has(den.lo, den.hi, 1 + c)
+      && arc_ok(l, m, c) && -1 <= l*p + m*r <= 1;
 */
 
 /* A diagonal entry 1 - 2 t for t in s (a sum of two squares), rounded
@@ -210,6 +230,229 @@ static inline cbx_iv q_dot(const trs_q *a, const trs_q *b)
                     q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3) ==>
                     iv_has(s01.lo, s01.hi, x0*y0 + x1*y1) && iv_has(s23.lo, s23.hi, x2*y2 + x3*y3); */
     return iv_add(s01, s23);
+}
+
+/* ---- the quaternion path's steps ----------------------------------------- */
+
+/* {x + y : x in a, y in b}, component by component. */
+/*@ requires a: \valid_read(a) && q_unit_box(*a);
+    requires b: \valid_read(b) && q_unit_box(*b);
+    assigns \nothing;
+    ensures rng: q_rng(\result, 4);
+    ensures in: \forall real x0, x1, x2, x3, y0, y1, y2, y3;
+                  q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3)
+                  ==> q_has(\result, x0 + y0, x1 + y1, x2 + y2, x3 + y3);
+*/
+static inline trs_q q_add(const trs_q *a, const trs_q *b)
+{
+    trs_q r;
+    r.c[0] = iv_add(a->c[0], b->c[0]);
+    r.c[1] = iv_add(a->c[1], b->c[1]);
+    r.c[2] = iv_add(a->c[2], b->c[2]);
+    r.c[3] = iv_add(a->c[3], b->c[3]);
+    return r;
+}
+
+/* {-x : x in a}, exact. */
+/*@ requires a: \valid_read(a) && q_unit_box(*a);
+    assigns \nothing;
+    ensures unit: q_unit_box(\result);
+    ensures in: \forall real x0, x1, x2, x3; q_has(*a, x0, x1, x2, x3) ==> q_has(\result, -x0, -x1, -x2, -x3);
+*/
+static inline trs_q q_neg(const trs_q *a)
+{
+    trs_q r;
+    r.c[0] = iv_neg(a->c[0]);
+    r.c[1] = iv_neg(a->c[1]);
+    r.c[2] = iv_neg(a->c[2]);
+    r.c[3] = iv_neg(a->c[3]);
+    return r;
+}
+
+/* The box of two boxes. */
+/*@ requires a: \valid_read(a) && q_unit_box(*a);
+    requires b: \valid_read(b) && q_unit_box(*b);
+    assigns \nothing;
+    ensures unit: q_unit_box(\result);
+    ensures in: \forall real x0, x1, x2, x3;
+                  q_has(*a, x0, x1, x2, x3) || q_has(*b, x0, x1, x2, x3) ==> q_has(\result, x0, x1, x2, x3);
+*/
+static inline trs_q q_hull(const trs_q *a, const trs_q *b)
+{
+    trs_q r;
+    r.c[0] = iv_hull(a->c[0], b->c[0]);
+    r.c[1] = iv_hull(a->c[1], b->c[1]);
+    r.c[2] = iv_hull(a->c[2], b->c[2]);
+    r.c[3] = iv_hull(a->c[3], b->c[3]);
+    return r;
+}
+
+/* [-1, 1]^4: every unit vector's box. */
+/*@ assigns \nothing;
+    ensures unit: q_unit_box(\result);
+    ensures in: \forall real x, y, z, w; unitq(x, y, z, w) ==> q_has(\result, x, y, z, w);
+*/
+static inline trs_q q_whole(void)
+{
+    trs_q r;
+    r.c[0].lo = -1.0;
+    r.c[0].hi = 1.0;
+    r.c[1] = r.c[0];
+    r.c[2] = r.c[0];
+    r.c[3] = r.c[0];
+    return r;
+}
+
+/* x / n for x in a and n in [n.lo, n.hi] (n.lo > 0): a component of a
+ * unit vector, so cut to [-1, 1]; ordered even where the quotient's
+ * enclosure lies outside [-1, 1] (no unit vector's component is there). */
+/*@ requires a: \is_finite(a.lo) && \is_finite(a.hi) && iv_rng(a.lo, a.hi, 0x1p250);
+    requires n: \is_finite(n.lo) && \is_finite(n.hi) && 0x1p-600 <= n.lo <= n.hi;
+    assigns \nothing;
+    ensures ok: iv_ok1(\result) && \result.lo <= \result.hi;
+    ensures in: \forall real x, k; -1 <= x <= 1 && sc_has(a.lo, a.hi, x, k) && iv_has(n.lo, n.hi, k)
+                  ==> iv_has(\result.lo, \result.hi, x);
+*/
+static inline cbx_iv unit_quot(cbx_iv a, cbx_iv n)
+{
+    cbx_iv d = iv_div(a, n);
+    cbx_iv r;
+    r.lo = cbx_max2(cbx_min2(d.lo, 1.0), -1.0);
+    r.hi = cbx_max2(cbx_min2(d.hi, 1.0), r.lo);
+    return r;
+}
+
+/* Encloses v / |v| for every v != 0 of the box: every unit u with a
+ * positive multiple k u in *v lies in the result.  Where |v| is not
+ * clearly positive over the box (below 2^-600, or its enclosure not
+ * ordered), the whole [-1, 1]^4. */
+/*@ requires v: \valid_read(v) && q_rng(*v, 0x1p250);
+    assigns \nothing;
+    ensures unit: q_unit_box(\result);
+    ensures in: \forall real x, y, z, w, k; 0 < k && unitq(x, y, z, w) && q_sc_has(*v, k, x, y, z, w)
+                  ==> q_has(\result, x, y, z, w);
+*/
+static inline trs_q q_normalise(const trs_q *v)
+{
+    cbx_iv s0;
+    cbx_iv s1;
+    cbx_iv s2;
+    cbx_iv s3;
+    cbx_iv t01;
+    cbx_iv t23;
+    cbx_iv n2;
+    cbx_iv n;
+    trs_q r;
+    /*@ assert sm: sqm(v->c[0].lo, 0x1p250) && sqm(-v->c[0].lo, 0x1p250) && sqm(v->c[0].hi, 0x1p250) && sqm(-v->c[0].hi, 0x1p250)
+                   && sqm(v->c[1].lo, 0x1p250) && sqm(-v->c[1].lo, 0x1p250) && sqm(v->c[1].hi, 0x1p250) && sqm(-v->c[1].hi, 0x1p250)
+                   && sqm(v->c[2].lo, 0x1p250) && sqm(-v->c[2].lo, 0x1p250) && sqm(v->c[2].hi, 0x1p250) && sqm(-v->c[2].hi, 0x1p250)
+                   && sqm(v->c[3].lo, 0x1p250) && sqm(-v->c[3].lo, 0x1p250) && sqm(v->c[3].hi, 0x1p250) && sqm(-v->c[3].hi, 0x1p250); */
+    /*@ assert sx0: sqmax(v->c[0].lo, v->c[0].hi) <= 0x1p500; */
+    /*@ assert sx1: sqmax(v->c[1].lo, v->c[1].hi) <= 0x1p500; */
+    /*@ assert sx2: sqmax(v->c[2].lo, v->c[2].hi) <= 0x1p500; */
+    /*@ assert sx3: sqmax(v->c[3].lo, v->c[3].hi) <= 0x1p500; */
+    s0 = iv_sqr(v->c[0]);
+    s1 = iv_sqr(v->c[1]);
+    s2 = iv_sqr(v->c[2]);
+    s3 = iv_sqr(v->c[3]);
+    /*@ assert sr0: sqp(v->c[0].lo) && sqp(v->c[0].hi) && 0 <= s0.hi <= 0x1p501 && s0.lo <= 0x1p501; */
+    /*@ assert sr1: sqp(v->c[1].lo) && sqp(v->c[1].hi) && 0 <= s1.hi <= 0x1p501 && s1.lo <= 0x1p501; */
+    /*@ assert sr2: sqp(v->c[2].lo) && sqp(v->c[2].hi) && 0 <= s2.hi <= 0x1p501 && s2.lo <= 0x1p501; */
+    /*@ assert sr3: sqp(v->c[3].lo) && sqp(v->c[3].hi) && 0 <= s3.hi <= 0x1p501 && s3.lo <= 0x1p501; */
+    t01 = iv_add(s0, s1);
+    t23 = iv_add(s2, s3);
+    /*@ assert tr: 0 <= t01.hi <= 0x1p503 && 0 <= t23.hi <= 0x1p503 && t01.lo <= 0x1p503 && t23.lo <= 0x1p503; */
+    n2 = iv_add(t01, t23);
+    /*@ assert nr: 0 <= n2.hi <= 0x1p505 && n2.lo <= 0x1p505; */
+    /*@ assert sq: \forall real x, y, z, w, k; q_sc_has(*v, k, x, y, z, w)
+                     ==> sq_at(s0.lo, s0.hi, k*x) && sq_at(s1.lo, s1.hi, k*y) && sq_at(s2.lo, s2.hi, k*z)
+                         && sq_at(s3.lo, s3.hi, k*w); */
+    /*@ assert n2s: \forall real x, y, z, w, k; q_sc_has(*v, k, x, y, z, w)
+                      ==> iv_has(n2.lo, n2.hi, (k*x)*(k*x) + (k*y)*(k*y) + (k*z)*(k*z) + (k*w)*(k*w)); */
+    /*@ assert k2: \forall real x, y, z, w, k; unitq(x, y, z, w) && q_sc_has(*v, k, x, y, z, w)
+                     ==> sc_unit(x, y, z, w, k); */
+    /*@ assert k3: \forall real x, y, z, w, k; unitq(x, y, z, w) && q_sc_has(*v, k, x, y, z, w)
+                     ==> sq_at(n2.lo, n2.hi, k); */
+    n = iv_sqrt(n2);
+    if (!((n.lo >= 0x1p-600) && (n.hi >= n.lo))) {
+        return q_whole();
+    }
+    /*@ assert nk: \forall real x, y, z, w, k; 0 < k && unitq(x, y, z, w) && q_sc_has(*v, k, x, y, z, w)
+                     ==> iv_has(n.lo, n.hi, k); */
+    r.c[0] = unit_quot(v->c[0], n);
+    r.c[1] = unit_quot(v->c[1], n);
+    r.c[2] = unit_quot(v->c[2], n);
+    r.c[3] = unit_quot(v->c[3], n);
+    return r;
+}
+
+/* One component of the arc box: a, b and (a + b) / den, den holding
+ * 1 + p.r (>= 1/2), hulled and cut to [-1, 1]. */
+/*@ requires a: iv_ok1(a) && a.lo <= a.hi;
+    requires b: iv_ok1(b) && b.lo <= b.hi;
+    requires den: \is_finite(den.lo) && \is_finite(den.hi) && 0.5 <= den.lo <= den.hi;
+    assigns \nothing;
+    ensures ok: iv_ok1(\result) && \result.lo <= \result.hi;
+    ensures in: \forall real p, r, c, l, m; arc_in(a, b, den, p, r, c, l, m)
+                  ==> iv_has(\result.lo, \result.hi, l*p + m*r);
+*/
+static inline cbx_iv arc_comp(cbx_iv a, cbx_iv b, cbx_iv den)
+{
+    cbx_iv s = iv_add(a, b);
+    cbx_iv q = iv_div(s, den);
+    cbx_iv h = iv_hull(iv_hull(a, b), q);
+    /*@ assert b: \forall real p, r, c, l, m; arc_in(a, b, den, p, r, c, l, m)
+                    ==> quot_at(q.lo, q.hi, p + r, 1 + c) && mono(1 + c, h.lo, q.lo) && mono(1 + c, q.hi, h.hi)
+                        && arc_below(l, m, c, p, r, h.lo) && arc_below(l, m, c, -p, -r, -h.hi); */
+    return iv_unit(h);
+}
+
+/* A box of R^4 holding the shorter great arc from every unit p of *a to
+ * every unit r of *b (the unit vectors l p + m r, l, m >= 0): the box of
+ * p, r and the tangents' meeting point (p + r) / (1 + p.r) (lemma arc_lo).
+ * All of [-1, 1]^4 where 1 + p.r is not clearly positive (below 1/2). */
+/*@ requires a: \valid_read(a) && q_unit_box(*a);
+    requires b: \valid_read(b) && q_unit_box(*b);
+    assigns \nothing;
+    ensures unit: q_unit_box(\result);
+    ensures arc: \forall real p0, p1, p2, p3, r0, r1, r2, r3, l, m;
+                   q_has(*a, p0, p1, p2, p3) && q_has(*b, r0, r1, r2, r3)
+                   && arc_pt(p0, p1, p2, p3, r0, r1, r2, r3, l, m)
+                   ==> q_has(\result, l*p0 + m*r0, l*p1 + m*r1, l*p2 + m*r2, l*p3 + m*r3);
+*/
+static inline trs_q q_arc_box(const trs_q *a, const trs_q *b)
+{
+    cbx_iv dt = q_dot(a, b);
+    cbx_iv den;
+    trs_q r;
+    /*@ assert w: q_has(*a, a->c[0].lo, a->c[1].lo, a->c[2].lo, a->c[3].lo)
+                  && q_has(*b, b->c[0].lo, b->c[1].lo, b->c[2].lo, b->c[3].lo); */
+    /*@ assert dw: iv_has(dt.lo, dt.hi, a->c[0].lo*b->c[0].lo + a->c[1].lo*b->c[1].lo
+                                        + a->c[2].lo*b->c[2].lo + a->c[3].lo*b->c[3].lo); */
+    /*@ assert dm: -1 <= itmin(a->c[0].lo, a->c[0].hi, b->c[0].lo, b->c[0].hi) && itmax(a->c[0].lo, a->c[0].hi, b->c[0].lo, b->c[0].hi) <= 1
+                   && -1 <= itmin(a->c[1].lo, a->c[1].hi, b->c[1].lo, b->c[1].hi) && itmax(a->c[1].lo, a->c[1].hi, b->c[1].lo, b->c[1].hi) <= 1
+                   && -1 <= itmin(a->c[2].lo, a->c[2].hi, b->c[2].lo, b->c[2].hi) && itmax(a->c[2].lo, a->c[2].hi, b->c[2].lo, b->c[2].hi) <= 1
+                   && -1 <= itmin(a->c[3].lo, a->c[3].hi, b->c[3].lo, b->c[3].hi) && itmax(a->c[3].lo, a->c[3].hi, b->c[3].lo, b->c[3].hi) <= 1; */
+    /*@ assert dr: iv_rng(dt.lo, dt.hi, 8) && dt.lo <= dt.hi; */
+    den = iv_add(iv_pt(1.0), dt);
+    /*@ assert d: \forall real p0, p1, p2, p3, r0, r1, r2, r3;
+                    q_has(*a, p0, p1, p2, p3) && q_has(*b, r0, r1, r2, r3)
+                    ==> iv_has(den.lo, den.hi, 1 + dot4(p0, p1, p2, p3, r0, r1, r2, r3)); */
+    if (!(den.lo >= 0.5)) {
+        return q_whole();
+    }
+    /*@ assert in: \forall real p0, p1, p2, p3, r0, r1, r2, r3, l, m;
+                     q_has(*a, p0, p1, p2, p3) && q_has(*b, r0, r1, r2, r3)
+                     && arc_pt(p0, p1, p2, p3, r0, r1, r2, r3, l, m)
+                     ==> arc_in(a->c[0], b->c[0], den, p0, r0, dot4(p0, p1, p2, p3, r0, r1, r2, r3), l, m)
+                         && arc_in(a->c[1], b->c[1], den, p1, r1, dot4(p0, p1, p2, p3, r0, r1, r2, r3), l, m)
+                         && arc_in(a->c[2], b->c[2], den, p2, r2, dot4(p0, p1, p2, p3, r0, r1, r2, r3), l, m)
+                         && arc_in(a->c[3], b->c[3], den, p3, r3, dot4(p0, p1, p2, p3, r0, r1, r2, r3), l, m); */
+    r.c[0] = arc_comp(a->c[0], b->c[0], den);
+    r.c[1] = arc_comp(a->c[1], b->c[1], den);
+    r.c[2] = arc_comp(a->c[2], b->c[2], den);
+    r.c[3] = arc_comp(a->c[3], b->c[3], den);
+    return r;
 }
 
 #endif /* CBX_QUAT_H */

@@ -25,13 +25,14 @@
  * the linear paths of T and S, each containing the exact result for every
  * real point of its operands, each end within a stated bound of the exact
  * end), the rotation matrices of a box of unit quaternions
- * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box)
+ * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box),
+ * the quaternion path's steps (src/f64/cbx_quat.h: normalisation, sums,
+ * negation, hulls, and the arc box holding every unit l p + m r, l, m >= 0)
  * and each cell's interval matrix from them (src/f64/cbx_cell.h: every
  * entry R_ij S_j(s) and T_i(s) for every s of the cell).  Tested only
  * (tests/test_trs.c, against MPFR): what remains in this file, the
- * quaternion path (normalisation, bisection, the arc box, the choice of
- * the shorter arc) and the cells' loop (proofs/README.md, "Rotation
- * motion").
+ * bisection walk, nlerp's blend, the choice of the shorter arc and the
+ * cells' loop (proofs/README.md, "Rotation motion").
  */
 #include <stdint.h>
 
@@ -47,50 +48,6 @@
 
 /* ---- quaternions -------------------------------------------------------- */
 
-/* Encloses v / |v| for every v of the box (0 not in it: the callers'
- * boxes have |v| >= 2^-125, or contain a unit vector's neighbourhood). */
-static trs_q q_normalise(const trs_q *v)
-{
-    cbx_iv n2 = iv_add(iv_add(iv_sqr(v->c[0]), iv_sqr(v->c[1])), iv_add(iv_sqr(v->c[2]), iv_sqr(v->c[3])));
-    cbx_iv n = iv_sqrt(n2);
-    trs_q r;
-    int i;
-    for (i = 0; i < 4; i++) {
-        r.c[i] = iv_unit(iv_div(v->c[i], n));
-    }
-    return r;
-}
-
-static trs_q q_add(const trs_q *a, const trs_q *b)
-{
-    trs_q r;
-    int i;
-    for (i = 0; i < 4; i++) {
-        r.c[i] = iv_add(a->c[i], b->c[i]);
-    }
-    return r;
-}
-
-static trs_q q_neg(const trs_q *a)
-{
-    trs_q r;
-    int i;
-    for (i = 0; i < 4; i++) {
-        r.c[i] = iv_neg(a->c[i]);
-    }
-    return r;
-}
-
-static trs_q q_hull(const trs_q *a, const trs_q *b)
-{
-    trs_q r;
-    int i;
-    for (i = 0; i < 4; i++) {
-        r.c[i] = iv_hull(a->c[i], b->c[i]);
-    }
-    return r;
-}
-
 /* (1 - s) a + s b for the real s of a double in [0, 1]. */
 static trs_q q_blend(const trs_q *a, const trs_q *b, double s)
 {
@@ -100,29 +57,6 @@ static trs_q q_blend(const trs_q *a, const trs_q *b, double s)
     int i;
     for (i = 0; i < 4; i++) {
         r.c[i] = iv_add(iv_mul(w0, a->c[i]), iv_mul(w1, b->c[i]));
-    }
-    return r;
-}
-
-/* A box of R^4 containing the shorter great arc between every unit p of
- * *a and every unit r of *b with p.r >= 0: the box of p, r and the tangents'
- * meeting point (p + r) / (1 + p.r).  All of [-1, 1]^4 where 1 + p.r is
- * not clearly positive. */
-static trs_q q_arc_box(const trs_q *a, const trs_q *b)
-{
-    cbx_iv den = iv_add(iv_pt(1.0), q_dot(a, b));
-    trs_q r = q_hull(a, b);
-    int i;
-    if (!(den.lo >= 0.5)) {
-        for (i = 0; i < 4; i++) {
-            r.c[i].lo = -1.0;
-            r.c[i].hi = 1.0;
-        }
-        return r;
-    }
-    for (i = 0; i < 4; i++) {
-        cbx_iv m = iv_div(iv_add(a->c[i], b->c[i]), den);
-        r.c[i] = iv_unit(iv_hull(r.c[i], m));
     }
     return r;
 }
