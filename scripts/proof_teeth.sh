@@ -202,6 +202,11 @@ case_ arc-box-ends-only src/f64/cbx_quat.h arc_comp proofs/trs.c b,in 'assert_b\
 case_ normalise-lo-from-hi src/f64/cbx_quat.h unit_quot proofs/trs.c ok,in ensures_in \
   "    r.lo = cbx_max2(cbx_min2(d.lo, 1.0), -1.0);" \
   "    r.lo = cbx_max2(cbx_min2(d.hi, 1.0), -1.0);" - &
+# 32. nlerp's blend with its two weights swapped (unsound: (1 - s) x + s y
+#    is no longer held; the containment must fail)
+case_ blend-weights-swapped src/f64/cbx_quat.h blend_comp proofs/trs.c m,r,p,o,rng,in 'assert_p\|ensures_in' \
+  "    cbx_iv p0 = iv_mul(w0, x);" \
+  "    cbx_iv p0 = iv_mul(w1, x);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -78,6 +78,11 @@
       && sqs2(x, w) && sqs2(y, z) && sqs2(y, w) && sqs2(x, z) && sqs2(z, w) && sqs2(x, y);
     lemma unit_rot: \forall real x, y, z, w; unitq(x, y, z, w) ==> rot_unit(x, y, z, w);
 
+    // A factor in [-2, 2] times one in [-1, 1] (nlerp's blend weights
+    // times a unit vector's components): the product's exact ends.
+    lemma itm_21: \forall real al, ah, bl, bh;
+      iv_rng(al, ah, 2) && iv_rng(bl, bh, 1) ==>
+        -2 <= itmin(al, ah, bl, bh) && itmax(al, ah, bl, bh) <= 2 && itmag(al, ah, bl, bh) <= 2;
     // A unit vector's components lie in [-1, 1].
     lemma unit_comp_h: \forall real x, y, z, w; unitq(x, y, z, w)
       && sqs2(y, z) && sqs2(x, w) && sqp(x) && sqp(y) && sqp(z) && sqp(w) && sql(x, 1) && sql(-x, 1) && sql(y, 1) && sql(-y, 1)

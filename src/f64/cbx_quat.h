@@ -6,10 +6,10 @@
  * rot22); each entry is the interval evaluation of its formula through
  * src/f64/cbx_iv.h, cut to [-1, 1] (where every entry of a rotation lies).
  * Also the quaternion path's steps: normalisation (every unit u with a
- * positive multiple in the box), sums, negation, hulls, and the box of
- * the shorter great arc between two boxes (every unit l p + m r, l, m >= 0:
- * specs/cbx_quat_logic.h, arc_pt, lemma arc_lo).  Proven in job T64
- * (proofs/trs.c).
+ * positive multiple in the box), sums, negation, hulls, nlerp's blend,
+ * and the box of the shorter great arc between two boxes (every unit
+ * l p + m r, l, m >= 0: specs/cbx_quat_logic.h, arc_pt, lemma arc_lo).
+ * Proven in job T64 (proofs/trs.c).
  */
 #ifndef CBX_QUAT_H
 #define CBX_QUAT_H
@@ -60,6 +60,12 @@ typedef struct trs_rot { cbx_iv e[3][3]; } trs_rot;
       && sc_has(q.c[2].lo, q.c[2].hi, z, k) && sc_has(q.c[3].lo, q.c[3].hi, w, k);
     // the component l p + m r of a point of the arc from p in a to r in b
     // (c = p.r, 1 + c in den)
+    // k (x, y, z, w) = (q0, q1, q2, q3)
+    predicate q_mul(real k, real x, real y, real z, real w, real q0, real q1, real q2, real q3) =
+      k*x == q0 && k*y == q1 && k*z == q2 && k*w == q3;
+    // u p + v q with each factor in its interval (nlerp's blend)
+    predicate blend_in(cbx_iv w0, cbx_iv w1, cbx_iv x, cbx_iv y, real u, real v, real p, real q) =
+      iv_has(w0.lo, w0.hi, u) && iv_has(w1.lo, w1.hi, v) && iv_has(x.lo, x.hi, p) && iv_has(y.lo, y.hi, q);
     predicate arc_in(cbx_iv a, cbx_iv b, cbx_iv den, real p, real r, real c, real l, real m) =
       iv_has(a.lo, a.hi, p) && iv_has(b.lo, b.hi, r) && iv_has(den.lo, den.hi, 1 + c)
       && arc_ok(l, m, c) && -1 <= l*p + m*r <= 1;
@@ -287,6 +293,63 @@ static inline trs_q q_hull(const trs_q *a, const trs_q *b)
     return r;
 }
 
+/* u p + v q for u in w0, v in w1, p in x, q in y: one component of
+ * nlerp's blend (w0 holding 1 - s, w1 = s). */
+/*@ requires w0: \is_finite(w0.lo) && \is_finite(w0.hi) && iv_rng(w0.lo, w0.hi, 2) && w0.lo <= w0.hi;
+    requires w1: \is_finite(w1.lo) && \is_finite(w1.hi) && iv_rng(w1.lo, w1.hi, 1) && w1.lo <= w1.hi;
+    requires x: iv_ok1(x) && x.lo <= x.hi;
+    requires y: iv_ok1(y) && y.lo <= y.hi;
+    assigns \nothing;
+    ensures rng: \is_finite(\result.lo) && \is_finite(\result.hi) && iv_rng(\result.lo, \result.hi, 4)
+                 && \result.lo <= \result.hi;
+    ensures in: \forall real u, v, p, q; blend_in(w0, w1, x, y, u, v, p, q)
+                  ==> iv_has(\result.lo, \result.hi, u*p + v*q);
+*/
+static inline cbx_iv blend_comp(cbx_iv w0, cbx_iv w1, cbx_iv x, cbx_iv y)
+{
+    cbx_iv p0 = iv_mul(w0, x);
+    cbx_iv p1 = iv_mul(w1, y);
+    /*@ assert m: itmag(w0.lo, w0.hi, x.lo, x.hi) <= 2 && -2 <= itmin(w0.lo, w0.hi, x.lo, x.hi)
+                  && itmax(w0.lo, w0.hi, x.lo, x.hi) <= 2
+                  && itmag(w1.lo, w1.hi, y.lo, y.hi) <= 1 && -1 <= itmin(w1.lo, w1.hi, y.lo, y.hi)
+                  && itmax(w1.lo, w1.hi, y.lo, y.hi) <= 1; */
+    /*@ assert r: iv_rng(p0.lo, p0.hi, 2.25) && iv_rng(p1.lo, p1.hi, 1.125); */
+    /*@ assert p: \forall real u, v, p, q; blend_in(w0, w1, x, y, u, v, p, q)
+                    ==> prod_at(p0.lo, p0.hi, u, p) && prod_at(p1.lo, p1.hi, v, q); */
+    /*@ assert o: blend_in(w0, w1, x, y, w0.lo, w1.lo, x.lo, y.lo); */
+    return iv_add(p0, p1);
+}
+
+/* (1 - s) x + s y for every x of *a and y of *b (s in [0, 1]): nlerp's
+ * blend before it is normalised. */
+/*@ requires a: \valid_read(a) && q_unit_box(*a);
+    requires b: \valid_read(b) && q_unit_box(*b);
+    requires s: \is_finite(s) && 0 <= s <= 1;
+    assigns \nothing;
+    ensures rng: q_rng(\result, 4);
+    ensures in: \forall real x0, x1, x2, x3, y0, y1, y2, y3;
+                  q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3)
+                  ==> q_has(\result, (1 - s)*x0 + s*y0, (1 - s)*x1 + s*y1, (1 - s)*x2 + s*y2, (1 - s)*x3 + s*y3);
+*/
+static inline trs_q q_blend(const trs_q *a, const trs_q *b, double s)
+{
+    cbx_iv w0 = iv_add(iv_pt(1.0), iv_pt(-s));
+    cbx_iv w1 = iv_pt(s);
+    trs_q r;
+    /*@ assert w: iv_has(w0.lo, w0.hi, 1 - s) && iv_rng(w0.lo, w0.hi, 2) && w0.lo <= w0.hi; */
+    /*@ assert bi: \forall real x0, x1, x2, x3, y0, y1, y2, y3;
+                     q_has(*a, x0, x1, x2, x3) && q_has(*b, y0, y1, y2, y3)
+                     ==> blend_in(w0, w1, a->c[0], b->c[0], 1 - s, s, x0, y0)
+                         && blend_in(w0, w1, a->c[1], b->c[1], 1 - s, s, x1, y1)
+                         && blend_in(w0, w1, a->c[2], b->c[2], 1 - s, s, x2, y2)
+                         && blend_in(w0, w1, a->c[3], b->c[3], 1 - s, s, x3, y3); */
+    r.c[0] = blend_comp(w0, w1, a->c[0], b->c[0]);
+    r.c[1] = blend_comp(w0, w1, a->c[1], b->c[1]);
+    r.c[2] = blend_comp(w0, w1, a->c[2], b->c[2]);
+    r.c[3] = blend_comp(w0, w1, a->c[3], b->c[3]);
+    return r;
+}
+
 /* [-1, 1]^4: every unit vector's box. */
 /*@ assigns \nothing;
     ensures unit: q_unit_box(\result);
@@ -384,6 +447,29 @@ static inline trs_q q_normalise(const trs_q *v)
     r.c[2] = unit_quot(v->c[2], n);
     r.c[3] = unit_quot(v->c[3], n);
     return r;
+}
+
+/* q / |q| for a quaternion q of doubles (a keyframe's rotation; not 0):
+ * every unit u with a positive multiple equal to q lies in the result. */
+/*@ requires q: \valid_read(q + (0 .. 3));
+    requires rng: \is_finite(q[0]) && \is_finite(q[1]) && \is_finite(q[2]) && \is_finite(q[3])
+                  && \abs(q[0]) <= 0x1p250 && \abs(q[1]) <= 0x1p250 && \abs(q[2]) <= 0x1p250
+                  && \abs(q[3]) <= 0x1p250;
+    assigns \nothing;
+    ensures unit: q_unit_box(\result);
+    ensures in: \forall real x, y, z, w, k; 0 < k && unitq(x, y, z, w) && q_mul(k, x, y, z, w, q[0], q[1], q[2], q[3])
+                  ==> q_has(\result, x, y, z, w);
+*/
+static inline trs_q q_unit_of(const double q[4])
+{
+    trs_q v;
+    v.c[0] = iv_pt(q[0]);
+    v.c[1] = iv_pt(q[1]);
+    v.c[2] = iv_pt(q[2]);
+    v.c[3] = iv_pt(q[3]);
+    /*@ assert sc: \forall real x, y, z, w, k; q_mul(k, x, y, z, w, q[0], q[1], q[2], q[3])
+                     ==> q_sc_has(v, k, x, y, z, w); */
+    return q_normalise(&v);
 }
 
 /* One component of the arc box: a, b and (a + b) / den, den holding

@@ -27,12 +27,12 @@
  * end), the rotation matrices of a box of unit quaternions
  * (src/f64/cbx_quat.h: every entry of R(q) for every unit q of the box),
  * the quaternion path's steps (src/f64/cbx_quat.h: normalisation, sums,
- * negation, hulls, and the arc box holding every unit l p + m r, l, m >= 0)
+ * negation, hulls, nlerp's blend, and the arc box holding every unit
+ * l p + m r, l, m >= 0)
  * and each cell's interval matrix from them (src/f64/cbx_cell.h: every
  * entry R_ij S_j(s) and T_i(s) for every s of the cell).  Tested only
  * (tests/test_trs.c, against MPFR): what remains in this file, the
- * bisection walk, nlerp's blend, the choice of the shorter arc and the
- * cells' loop (proofs/README.md, "Rotation motion").
+ * bisection walk, the choice of the shorter arc and the cells' loop (proofs/README.md, "Rotation motion").
  */
 #include <stdint.h>
 
@@ -45,21 +45,6 @@
 #include "cbx_cell.h"
 
 #define TRS_MAX_DEPTH 16U
-
-/* ---- quaternions -------------------------------------------------------- */
-
-/* (1 - s) a + s b for the real s of a double in [0, 1]. */
-static trs_q q_blend(const trs_q *a, const trs_q *b, double s)
-{
-    cbx_iv w0 = iv_add(iv_pt(1.0), iv_pt(-s));
-    cbx_iv w1 = iv_pt(s);
-    trs_q r;
-    int i;
-    for (i = 0; i < 4; i++) {
-        r.c[i] = iv_add(iv_mul(w0, a->c[i]), iv_mul(w1, b->c[i]));
-    }
-    return r;
-}
 
 /* acc = b (first != 0), else acc grown to hold b. */
 static void box_grow(cbx_box *acc, const cbx_box *b, int first)
@@ -122,17 +107,6 @@ static int key_zero_q(const cbx_trs *k)
 {
     int z = (k->q[0] == 0.0) + (k->q[1] == 0.0) + (k->q[2] == 0.0) + (k->q[3] == 0.0);
     return z == 4;
-}
-
-/* The unit quaternion of a keyframe, enclosed. */
-static trs_q key_unit(const cbx_trs *k)
-{
-    trs_q v;
-    int i;
-    for (i = 0; i < 4; i++) {
-        v.c[i] = iv_pt(k->q[i]);
-    }
-    return q_normalise(&v);
 }
 
 /* ---- the path of the rotation, cell by cell ------------------------------ */
@@ -262,8 +236,8 @@ static cbx_status path_setup(const cbx_trs *k0, const cbx_trs *k1, cbx_interp mo
     if ((key_in_range(k0) + key_in_range(k1)) != 2) {
         return CBX_ERANGE;
     }
-    p->u0 = key_unit(k0);
-    p->u1 = key_unit(k1);
+    p->u0 = q_unit_of(k0->q);
+    p->u1 = q_unit_of(k1->q);
     p->u1n = q_neg(&p->u1);
     dot = q_dot(&p->u0, &p->u1);
     p->both = (dot.lo < 0.0) && (dot.hi >= 0.0); /* the sign is not decided: both arcs */
