@@ -32,7 +32,8 @@
  * and each cell's interval matrix from them (src/f64/cbx_cell.h: every
  * entry R_ij S_j(s) and T_i(s) for every s of the cell).  Tested only
  * (tests/test_trs.c, against MPFR): what remains in this file, the
- * bisection walk, the choice of the shorter arc and the cells' loop (proofs/README.md, "Rotation motion").
+ * bisection walk, the choice of the shorter arc and the cells' loop
+ * (proofs/README.md, "Rotation motion").
  */
 #include <stdint.h>
 
