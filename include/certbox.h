@@ -171,6 +171,7 @@ typedef enum cbx_class {
 #include "cbx_psph.h"
 #include "cbx_pnear.h"
 #include "cbx_pball.h"
+#include "cbx_pwide.h"
 #endif
 
 
@@ -472,7 +473,8 @@ cbx_status cbx_transform_box_pieces(const cbx_imat *pieces, size_t n, const cbx_
  *   ball: a ball very near the camera plane for its distance from the
  *   origin)
  *                                       -> CBX_ERANGE, *out the whole space
- * Binary64 only.  *out may not overlap *p or c. */
+ * Binary64 (binary32 twin: cbx_project_spheref, below).  *out may not
+ * overlap *p or c. */
 /*@ requires valid: \valid_read(p) && \valid_read(c + (0 .. 2)) && \valid(out);
     requires sep: \separated(out, p) && \separated(out, c + (0 .. 2));
     assigns *out;
@@ -528,8 +530,8 @@ cbx_status cbx_project_sphere(const cbx_proj *p, const double c[3], double r, cb
  *   within 2^-20 (measured: only where W's magnitude on the box is above
  *   about 2^16 wn, the near plane close to the rounding of W there)
  *                                      -> CBX_ERANGE, *out the whole space
- * Binary64 only.  out may be in itself; otherwise *out may not overlap
- * *p or *in. */
+ * Binary64 (twin: cbx_project_box_nearf).  out may be in itself;
+ * otherwise *out may not overlap *p or *in. */
 /*@ requires valid: \valid_read(p) && \valid_read(in) && \valid(out);
     requires sep: \separated(out, p) && (\separated(out, in) || out == in);
     assigns *out;
@@ -600,7 +602,8 @@ cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn,
  *   plane; proven)                      -> CBX_EMPTY,  *out empty
  *   an end above 2^99 in magnitude, or one that cannot be certified
  *   within 2^-20                        -> CBX_ERANGE, *out the whole space
- * Binary64 only.  *out may not overlap *p or c. */
+ * Binary64 (twin: cbx_project_sphere_nearf).  *out may not overlap *p
+ * or c. */
 /*@ requires valid: \valid_read(p) && \valid_read(c + (0 .. 2)) && \valid(out);
     requires sep: \separated(out, p) && \separated(out, c + (0 .. 2));
     assigns *out;
@@ -636,6 +639,132 @@ cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn,
 cbx_status cbx_project_sphere_near(const cbx_proj *p, const double c[3], double r, double wn, cbx_box *out);
 
 #endif /* binary64 only */
+
+/* ---- binary32 twins of the binary64-only projective bounds ------------
+ * cbx_project_spheref, cbx_project_box_nearf, cbx_project_sphere_nearf:
+ * the bounds of cbx_project_sphere, cbx_project_box_near and
+ * cbx_project_sphere_near for float inputs, with the same statuses, special
+ * cases and domain (read on the float values).  Each widens its inputs to
+ * double (exact), calls the binary64 function and rounds each end outward
+ * to float: at most 2^-22 |end| + 2^-147 further out (one or two units in
+ * the last place of float).  Proven (specs/cbx_pwide.h) on the binary64
+ * contracts: with CBX_OK, the same containment of every real point
+ * (ps_axis, pn_axis, pb_axis on the float values) and tightness within
+ * 2^-19 (1 + |end|) (twice the binary64 slack; psf_tight, pnf_tight,
+ * pbf_tight).  An end of the binary64 result above 2^100 in magnitude
+ * (never returned with CBX_OK: such ends give CBX_ERANGE there) would give
+ * CBX_ERANGE and the whole space.  They need the binary64 arithmetic of the
+ * machine (no binary32-only path).  *out may not overlap the inputs
+ * (cbx_project_box_nearf: out may be in itself). */
+#if !defined(__FRAMAC__) || (!defined(CBX_FRAMAC_ONLY_32) && !defined(CBX_FRAMAC_ONLY_64))
+/*@ requires valid: \valid_read(p) && \valid_read(c + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, p) && \separated(out, c + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes psf_nan(p, c, r);
+      ensures \result == CBX_EINVAL && whole_space_f(out);
+    behavior ball_input:
+      assumes !psf_nan(p, c, r);
+      ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
+      ensures whole: \result != CBX_OK ==> whole_space_f(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(psf_dom(p, c, r));
+      ensures behind: \old(psf_dom(p, c, r))
+        && !ps_front(\old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                     \old(c[0]), \old(c[1]), \old(c[2]), r) ==> \result == CBX_EBEHIND;
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && ps_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r)
+        && psf_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r);
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && ps_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r)
+        && psf_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r);
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && ps_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r)
+        && psf_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_spheref(const cbx_projf *p, const float c[3], float r, cbx_boxf *out);
+
+/* cbx_project_box_nearf: cbx_project_box_near for float inputs (above). */
+/*@ requires valid: \valid_read(p) && \valid_read(in) && \valid(out);
+    requires sep: \separated(out, p) && (\separated(out, in) || out == in);
+    assigns *out;
+    behavior nan_input:
+      assumes pnf_nan(p, in, wn);
+      ensures \result == CBX_EINVAL && whole_space_f(out);
+    behavior empty_input:
+      assumes !pnf_nan(p, in, wn) && is_empty_f(in);
+      ensures \result == CBX_EMPTY && empty_out_f(out);
+    behavior box_input:
+      assumes !pnf_nan(p, in, wn) && !is_empty_f(in);
+      ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE;
+      ensures whole: \result == CBX_ERANGE ==> whole_space_f(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(pnf_dom(p, in, wn));
+      ensures void: \result == CBX_EMPTY ==> empty_out_f(out)
+        && pn_void(wn, \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                   \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]));
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && pn_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn)
+        && pnf_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn);
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && pn_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn)
+        && pnf_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn);
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && pn_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn)
+        && pnf_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(in->lo[0]), \old(in->hi[0]), \old(in->lo[1]), \old(in->hi[1]), \old(in->lo[2]), \old(in->hi[2]), wn);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_box_nearf(const cbx_projf *p, const cbx_boxf *in, float wn, cbx_boxf *out);
+
+/* cbx_project_sphere_nearf: cbx_project_sphere_near for float inputs
+ * (above). */
+/*@ requires valid: \valid_read(p) && \valid_read(c + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, p) && \separated(out, c + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes pbf_nan(p, c, r, wn);
+      ensures \result == CBX_EINVAL && whole_space_f(out);
+    behavior ball_input:
+      assumes !pbf_nan(p, c, r, wn);
+      ensures st: \result == CBX_OK || \result == CBX_EMPTY || \result == CBX_ERANGE;
+      ensures whole: \result == CBX_ERANGE ==> whole_space_f(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(pbf_dom(p, c, r, wn));
+      ensures void: \result == CBX_EMPTY ==> empty_out_f(out)
+        && pb_void(wn, \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]),
+                   \old(c[0]), \old(c[1]), \old(c[2]), r);
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && pb_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r, wn)
+        && pbf_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r, wn);
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && pb_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r, wn)
+        && pbf_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r, wn);
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && pb_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r, wn)
+        && pbf_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+                   \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(c[0]), \old(c[1]), \old(c[2]), r, wn);
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float r, float wn, cbx_boxf *out);
+#endif /* binary32 twins */
 
 /* ---- the build check ---------------------------------------------------
  * The proofs assume every C operation rounds once, to nearest, in its own

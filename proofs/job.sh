@@ -3,7 +3,8 @@
 # and one selection of goals.  Usage: sh proofs/job.sh NAME (run from the
 # checkout's root, with WHY3CONFIG set; proofs/run.sh does both).
 #   L64, L32  the lemmas of each family (proofs/lemmas.c, proofs/lemmas_f.c)
-#   LP64      the lemmas of specs/cbx_psph.h, cbx_pnear.h, cbx_pball.h
+#   LP64      the lemmas of specs/cbx_psph.h, cbx_pnear.h, cbx_pball.h,
+#             cbx_pwide.h
 #             (proofs/lemmas_p.c; the goals: those files' lemmas, by name)
 #   A64, A32  the functions marked /* proof: -wp-split */ in their source
 #             (their two-sided postconditions over several behaviors time
@@ -39,6 +40,11 @@
 #             (proofs/pball.c: src/f64/cbx_pball.c, on T64 and the
 #             enclosures of PS64, with the lemmas of specs/cbx_pball.h);
 #             its smoke tests
+#   PW, SPW   the binary32 twins of those three (proofs/pwide.c:
+#             src/f32/cbx_pwide.c, on the contracts of PS64, PN64, PB64,
+#             with the lemmas of specs/cbx_pwide.h, proven in LP64): both
+#             families' logic in one unit, so their provers are the
+#             unpruned entries cvc4r, z3r (proofs/setup.sh); its smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
 #             -wp-split; PA64, PA32 its functions marked for -wp-split;
@@ -62,7 +68,7 @@ FC="frama-c $(for d in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-a
 PAR=${CBX_WP_PAR:-2}
 # each family's jobs use its own prover entries (proofs/setup.sh: the same
 # provers, with the axioms that family never needs left out)
-case $name in *64*) fam=64 ;; *) fam=32 ;; esac
+case $name in PW|SPW) fam= ;; *64*) fam=64 ;; *) fam=32 ;; esac
 WP="-wp -wp-rte -wp-par $PAR"   # + the provers, limits and cache of each pass (below)
 # Smoke tests.  A smoke goal that the prover proves (false derived) means
 # goals proved vacuously.  A vacuous goal matters only at a point that some
@@ -131,13 +137,15 @@ case $name in
   SPN64) TU=proofs/pnear.c; OPTS="$SMOKE $NOGOALS"; SG=pnear ;;
   PB64) TU=proofs/pball.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pball)" ;;
   SPB64) TU=proofs/pball.c; OPTS="$SMOKE $NOGOALS"; SG=pball ;;
+  PW) TU=proofs/pwide.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pwide)" ;;
+  SPW) TU=proofs/pwide.c; OPTS="$SMOKE $NOGOALS"; SG=pwide ;;
   ST64) TU=proofs/trs.c; OPTS="$SMOKE $NOGOALS"; SG=trs ;;
   P64|P32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS=$WP; SEL="-wp-fct $(fcts $TU proj)" ;;
   PA64|PA32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split"; SEL="-wp-fct $(fcts $TU projsplit)" ;;
   SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SG=proj,projsplit ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   LP64) TU=proofs/lemmas_p.c; OPTS=$WP
-    SEL="-wp-prop $(grep -ho 'lemma [a-z0-9_]*:' specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h | sed 's/lemma //; s/://' | paste -sd, -)" ;;
+    SEL="-wp-prop $(grep -ho 'lemma [a-z0-9_]*:' specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h specs/cbx_pwide.h | sed 's/lemma //; s/://' | paste -sd, -)" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
   BS64|BS32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP $BALL"; SEL="-wp-fct $(fcts $TU ball)" ;;
   BSA64|BSA32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split $BALL"; SEL="-wp-fct $(fcts $TU ballsplit)" ;;

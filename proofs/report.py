@@ -39,6 +39,8 @@ JOBS = {
     'PB64': 'binary64 ball clipped at a near plane (proofs/pball.c)',
     'SPN64': 'binary64 clipped-box smoke tests',
     'SPB64': 'binary64 clipped-ball smoke tests',
+    'PW': 'binary32 twins of the projected ball and the clipped box and ball (proofs/pwide.c)',
+    'SPW': 'binary32 projective twins smoke tests',
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',
     'PA64': 'binary64 projective bound, -wp-split', 'PA32': 'binary32 projective bound, -wp-split',
     'SP64': 'binary64 projective-bound smoke tests', 'SP32': 'binary32 projective-bound smoke tests',

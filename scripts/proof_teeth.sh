@@ -26,7 +26,7 @@ case_() {
   split=${9:--wp-split}; [ "$split" = - ] && split=''
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
-  fam=64; case $tu in *_f.c) fam=32;; esac
+  fam=64; case $tu in *pwide.c) fam=;; *_f.c) fam=32;; esac
   # DEFS: the lemma groups of the function's proof job (proofs/job.sh), so
   # that a goal fails for the weakened body, not for a missing lemma
   (cd "$d" && frama-c $(teeth_incs "$d") ${DEFS:-} "$tu" \
@@ -207,6 +207,16 @@ case_ normalise-lo-from-hi src/f64/cbx_quat.h unit_quot proofs/trs.c ok,in ensur
 case_ blend-weights-swapped src/f64/cbx_quat.h blend_comp proofs/trs.c m,r,p,o,rng,in 'assert_p\|ensures_in' \
   "    cbx_iv p0 = iv_mul(w0, x);" \
   "    cbx_iv p0 = iv_mul(w1, x);" - &
+# 33. a binary32 twin's lower end rounded to the nearest float instead of
+#    down (unsound: the float end may pass the binary64 end; must fail)
+case_ twin-down-nearest src/f32/cbx_pwide.c pw_down proofs/pwide.c fin,dn ensures_dn \
+  "    return pw_f32(cbx_sub_rn(x, e));" \
+  "    return pw_f32(x);" - &
+# 34. a binary32 twin's lower end rounded down twice (sound, but two float
+#    steps further out: the tightness that pw_near carries must fail)
+case_ twin-down-twice src/f32/cbx_pwide.c pw_narrow proofs/pwide.c st,ok0,ok1,ok2,empty,whole ensures_ok0 \
+  "        o->lo[0] = pw_down(b->lo[0]); o->hi[0] = pw_up(b->hi[0]);" \
+  "        o->lo[0] = pw_down(pw_down(b->lo[0])); o->hi[0] = pw_up(b->hi[0]);" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -125,168 +125,12 @@ static void random_run(const char *name)
     }
 }
 
-/* ---- cases ------------------------------------------------------------------- */
-static void random_camera(xu_rng *g)
+/* ---- cases (tests/proj_cases.c) ------------------------------------------------ */
+static void hard_run(const char *name, cbx_status want, const char *what)
 {
-    double q[4], T[3], vc[3], n;
-    int j;
-    tc_random_camera(g, P, q, T, &n);
-    /* a center in view space: in front (mostly), near the plane, behind;
-     * half of the balls around the near plane (so that it cuts them) */
-    if (xu_rng_int(g, 0, 1) == 0) {
-        vc[2] = -tc_scaled(g, xu_rng_unit(g) + 0.01, -8, 14);
-        if (xu_rng_int(g, 0, 9) == 0)
-            vc[2] = -vc[2];
-        R = fabs(vc[2]) * tc_scaled(g, xu_rng_unit(g), -30, 1);
-    } else {
-        vc[2] = -n * 4 * xu_rng_unit(g);
-        R = n * tc_scaled(g, xu_rng_unit(g) + 0.01, -4, 4);
-    }
-    vc[0] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
-    vc[1] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
-    tc_to_world(q, T, vc, C);
-    WN = n * ldexp(1.0, xu_rng_int(g, -3, 1));
-    if (xu_rng_int(g, 0, 7) == 0) { /* the whole map scaled by 2^k, and wn with it */
-        int i, k = xu_rng_int(g, -40, 40);
-        for (i = 0; i < 4; i++)
-            for (j = 0; j < 4; j++)
-                P[i][j] = ldexp(P[i][j], k);
-        WN = ldexp(WN, k);
-    }
-}
-
-static void random_general(xu_rng *g)
-{
-    double w;
-    int i, j;
-    for (i = 0; i < 4; i++)
-        for (j = 0; j < 4; j++)
-            P[i][j] = xu_gen_signed(g, -20, 20);
-    P[3][3] = fabs(P[3][3]) * 64; /* W mostly positive near the origin */
-    w = P[3][3];
-    for (j = 0; j < 3; j++) {
-        C[j] = tc_scaled(g, 2 * xu_rng_unit(g) - 1, -10, 2);
-        w += P[3][j] * C[j];
-    }
-    R = tc_scaled(g, xu_rng_unit(g), -30, 3);
-    /* the near plane at W's value at the center times 2^-6 .. 2 (it cuts
-     * the ball often), or anywhere when W is not positive there */
-    WN = w > 0x1p-90 ? w * tc_scaled(g, 1 + xu_rng_unit(g), -7, 0) : tc_scaled(g, 1 + xu_rng_unit(g), -30, 10);
-}
-
-static void identity_camera(void)
-{
-    static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
-    tc_camera(P, 2.0, 1.0, 0.125, 128, q0, t0);
-}
-
-static void ball(double c0, double c1, double c2, double r)
-{
-    C[0] = c0;
-    C[1] = c1;
-    C[2] = c2;
-    R = r;
-}
-
-static void hard_cases(void)
-{
-    static const double bad_wn[] = {0.0, -0.0, -1.0, 0x1p-101, 0x1p121, INFINITY, -INFINITY};
-    int k;
-    /* the identity camera looks down -z, W = -z */
-    identity_camera();
-    WN = 0.125;
-    ball(0, 0, -10, 1);
-    run_case("ball ahead");
-    ball(0, 0, 0, 4);
-    run_case("ball around the camera");
-    ball(3, 1, -0.5, 1);
-    run_case("ball across the near plane, off axis");
-    ball(0, 0, 10, 1);
-    check(run_case("ball behind the camera") == CBX_EMPTY, "a ball behind the camera without CBX_EMPTY");
-    ball(0, 0, 0.875, 1);
-    run_case("ball touching the near plane from behind");
-    ball(0, 0, -1.125, 1);
-    run_case("ball touching the near plane from in front");
-    ball(0, 0, -1, 1);
-    run_case("ball touching the camera plane");
-    ball(0, 0, -0.125, 0);
-    run_case("a point on the near plane");
-    ball(0, 0, -0.0625, 0);
-    check(run_case("a point behind the near plane") == CBX_EMPTY, "a point behind the near plane without CBX_EMPTY");
-    ball(1e6, -1e6, -1e3, 1e7);
-    run_case("huge ball around the camera");
-    ball(1e3, 1e3, -1e4, 1e-9);
-    run_case("tiny ball far away");
-    ball(0.5, 0.5, -0.25, 0.125 + 0x1p-40);
-    run_case("nearly tangent to the near plane");
-    /* NaN in each input, bad near planes */
-    for (k = 0; k < 21; k++) {
-        identity_camera();
-        ball(0, 0, -1, 2);
-        WN = 0.125;
-        if (k < 16)
-            P[k / 4][k % 4] = NAN;
-        else if (k < 19)
-            C[k - 16] = NAN;
-        else if (k < 20)
-            R = NAN;
-        else
-            WN = NAN;
-        check(run_case("NaN") == CBX_EINVAL, "NaN without CBX_EINVAL");
-    }
-    identity_camera();
-    for (k = 0; k < (int)(sizeof bad_wn / sizeof bad_wn[0]); k++) {
-        ball(0, 0, -10, 1);   /* a ball that gets CBX_OK with wn = 0.125 */
-        WN = bad_wn[k];
-        check(run_case("near plane outside the domain") == CBX_ERANGE, "wn outside the domain without CBX_ERANGE");
-    }
-    WN = 0.125;
-    for (k = 0; k < 8; k++) {   /* each row, the center, the radius outside the domain */
-        identity_camera();
-        ball(0, 0, -10, 1);
-        if (k < 4)
-            P[k][k == 3 ? 2 : k] = k == 3 ? -0x1p61 : 0x1p61;
-        else if (k < 7)
-            C[k - 4] = 0x1p61;
-        else
-            R = INFINITY;
-        check(run_case("an entry, the center or the radius beyond the domain") == CBX_ERANGE,
-              "outside the domain without CBX_ERANGE");
-    }
-    /* an end beyond 2^99: X up to 2^60 at W = 2^-100 */
-    memset(P, 0, sizeof P);
-    P[0][0] = 0x1p60; P[1][1] = 1; P[2][2] = 1; P[3][2] = 1;
-    ball(1, 0, 0.5, 0.5);
-    WN = 0x1p-100;
-    check(run_case("an end beyond 2^99") == CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
-    /* rank-deficient maps: W constant (in front, on the plane, behind); X zero */
-    for (k = 0; k < 3; k++) {
-        memset(P, 0, sizeof P);
-        P[0][0] = 1; P[1][1] = 1; P[2][2] = 1;
-        P[3][3] = k == 0 ? 2 : k == 1 ? 0.125 : 0.0625;
-        ball(1, 2, 3, 4);
-        WN = 0.125;
-        run_case("W constant");
-    }
-    identity_camera();
-    P[0][0] = P[0][1] = P[0][2] = P[0][3] = 0;
-    ball(0, 0, -1, 4);
-    run_case("X_0 zero");
-    identity_camera();
-    memcpy(P[0], P[3], sizeof P[0]);
-    run_case("X_0 = W (X / W constant)");
-    /* wide and narrow fields of view; W from 2^-90 to 2^100 */
-    for (k = 0; k < 8; k++) {
-        static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
-        int i, j;
-        tc_camera(P, k < 4 ? ldexp(1.0, -6 - k) : ldexp(1.0, 4 + k), 1.5, 0.01, 1e4, q0, t0);
-        for (i = 0; i < 4; i++)
-            for (j = 0; j < 4; j++)
-                P[i][j] = ldexp(P[i][j], 12 * k - 40);
-        ball(-3, 5, -2, 7);
-        WN = ldexp(0.01, 12 * k - 40);
-        run_case("scaled wide or narrow camera");
-    }
+    cbx_status st = run_case(name);
+    if (what)
+        check(st == want, what);
 }
 
 int main(int argc, char **argv)
@@ -296,11 +140,11 @@ int main(int argc, char **argv)
     xu_rng g;
     g.s = seed;
     pbo_init(&S, seed + 99);
-    hard_cases();
+    tc_ball_hard(P, C, &R, &WN, 0x1p-40, hard_run);
     for (k = 0; k < n; k++) {
-        random_camera(&g);
+        tc_ball_camera(&g, P, C, &R, &WN);
         random_run("random camera");
-        random_general(&g);
+        tc_ball_general(&g, P, C, &R, &WN);
         random_run("random general map");
     }
     case_name = "the random cases";

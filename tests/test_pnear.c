@@ -145,70 +145,6 @@ static void in_front_case(const char *name)
 }
 
 /* ---- cases ------------------------------------------------------------------- */
-static void random_camera(xu_rng *g)
-{
-    double q[4], T[3], vc[3], c[3], n, hs;
-    int e;
-    int j;
-    tc_random_camera(g, P, q, T, &n);
-    /* a center in view space: in front (mostly), near the plane, behind;
-     * half of the boxes around the near plane (so that it cuts them) */
-    if (xu_rng_int(g, 0, 1) == 0) {
-        vc[2] = -tc_scaled(g, xu_rng_unit(g) + 0.01, -8, 14);
-        if (xu_rng_int(g, 0, 9) == 0)
-            vc[2] = -vc[2];
-        hs = fabs(vc[2]) + n;
-        e = -30;
-    } else {
-        vc[2] = -n * 4 * xu_rng_unit(g);
-        hs = n * 8;
-        e = -4;
-    }
-    vc[0] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
-    vc[1] = vc[2] * (2 * xu_rng_unit(g) - 1) * 2;
-    tc_to_world(q, T, vc, c);
-    for (j = 0; j < 3; j++) {
-        double h = hs * tc_scaled(g, xu_rng_unit(g), e, 1);
-        B.lo[j] = c[j] - h;
-        B.hi[j] = c[j] + h;
-    }
-    WN = n * ldexp(1.0, xu_rng_int(g, -3, 1));
-    if (xu_rng_int(g, 0, 7) == 0) { /* the whole map scaled by 2^k, and wn with it */
-        int i, k = xu_rng_int(g, -40, 40);
-        for (i = 0; i < 4; i++)
-            for (j = 0; j < 4; j++)
-                P[i][j] = ldexp(P[i][j], k);
-        WN = ldexp(WN, k);
-    }
-}
-
-static void random_general(xu_rng *g)
-{
-    double w;
-    int i, j;
-    for (i = 0; i < 4; i++)
-        for (j = 0; j < 4; j++)
-            P[i][j] = xu_gen_signed(g, -20, 20);
-    P[3][3] = fabs(P[3][3]) * 64; /* W mostly positive near the origin */
-    w = P[3][3];
-    for (j = 0; j < 3; j++) {
-        double c = tc_scaled(g, 2 * xu_rng_unit(g) - 1, -10, 4);
-        double h = tc_scaled(g, xu_rng_unit(g), -30, 3);
-        B.lo[j] = c - h;
-        B.hi[j] = c + h;
-        w += P[3][j] * c;
-    }
-    /* the near plane at W's value at the center times 2^-6 .. 2 (it cuts
-     * the box often), or anywhere when W is not positive there */
-    WN = w > 0x1p-90 ? w * tc_scaled(g, 1 + xu_rng_unit(g), -7, 0) : tc_scaled(g, 1 + xu_rng_unit(g), -30, 10);
-}
-
-static void identity_camera(void)
-{
-    static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
-    tc_camera(P, 2.0, 1.0, 0.125, 128, q0, t0);
-}
-
 static void set_box(double l0, double h0, double l1, double h1, double l2, double h2)
 {
     B.lo[0] = l0; B.hi[0] = h0;
@@ -249,7 +185,7 @@ static void hard_cases(void)
     static const double bad_wn[] = {0.0, -0.0, -1.0, 0x1p-101, 0x1p121, INFINITY, -INFINITY};
     int k;
     /* a box straight ahead, in front; across the near plane; behind */
-    identity_camera();
+    tc_identity_camera(P);
     set_box(-1, 1, -1, 1, -12, -8); WN = 0.125;
     run_case("box ahead");
     set_box(-1, 1, -1, 1, -4, 4);
@@ -268,7 +204,7 @@ static void hard_cases(void)
     run_case("tiny box far away");
     /* NaN in each input, an empty box, bad near planes */
     for (k = 0; k < 23; k++) {
-        identity_camera();
+        tc_identity_camera(P);
         set_box(-1, 1, -1, 1, -4, 4); WN = 0.125;
         if (k < 16)
             P[k / 4][k % 4] = NAN;
@@ -278,7 +214,7 @@ static void hard_cases(void)
             WN = NAN;
         check(run_case("NaN") == CBX_EINVAL, "NaN without CBX_EINVAL");
     }
-    identity_camera();
+    tc_identity_camera(P);
     set_box(-1, 1, 1, -1, -4, 4); WN = 0.125;
     check(run_case("empty box") == CBX_EMPTY, "empty box without CBX_EMPTY");
     set_box(-1, 1, -1, 1, -4, INFINITY);
@@ -289,7 +225,7 @@ static void hard_cases(void)
     }
     WN = 0.125;
     for (k = 0; k < 10; k++) {   /* each row, then each box end, outside the domain */
-        identity_camera();
+        tc_identity_camera(P);
         set_box(-1, 1, -1, 1, -12, -8);
         if (k < 4)
             P[k][k == 3 ? 2 : k] = k == 3 ? -0x1p61 : 0x1p61;
@@ -298,7 +234,7 @@ static void hard_cases(void)
         check(run_case("an entry or a box end above 2^60") == CBX_ERANGE, "outside the domain without CBX_ERANGE");
     }
     /* a ratio a_j / b_j beyond 2^100 (W's x coefficient 2^-60, X's 2^50) */
-    identity_camera();
+    tc_identity_camera(P);
     P[3][0] = 0x1p-60;
     P[0][0] = 0x1p50;
     set_box(-1, 1, -1, 1, -4, 4);
@@ -321,7 +257,7 @@ static void hard_cases(void)
         set_box(-1, 1, -1, 1, -4, 4);
         run_case("W constant");
     }
-    identity_camera();
+    tc_identity_camera(P);
     P[0][0] = P[0][1] = P[0][2] = P[0][3] = 0;
     set_box(-1, 1, -1, 1, -4, 4);
     run_case("X_0 zero");
@@ -336,12 +272,7 @@ static void hard_cases(void)
     run_case("a diagonal plane through four corners");
     /* wide and narrow fields of view; W from 2^-90 to 2^100 */
     for (k = 0; k < 8; k++) {
-        static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
-        int i, j;
-        tc_camera(P, k < 4 ? ldexp(1.0, -6 - k) : ldexp(1.0, 4 + k), 1.5, 0.01, 1e4, q0, t0);
-        for (i = 0; i < 4; i++)
-            for (j = 0; j < 4; j++)
-                P[i][j] = ldexp(P[i][j], 12 * k - 40);
+        tc_scaled_camera(P, k);
         set_box(-3, 5, -2, 7, -9, 0.5); WN = ldexp(0.01, 12 * k - 40);
         run_case("scaled wide or narrow camera");
     }
@@ -356,12 +287,12 @@ int main(int argc, char **argv)
     pno_init(&S, seed + 99);
     hard_cases();
     for (k = 0; k < n; k++) {
-        random_camera(&g);
+        tc_box_camera(&g, P, &B, &WN);
         random_run("random camera");
-        random_general(&g);
+        tc_box_general(&g, P, &B, &WN);
         random_run("random general map");
         if (k % 8 == 0) {
-            random_camera(&g);
+            tc_box_camera(&g, P, &B, &WN);
             in_front_case("box in front, near plane at 2^-90");
         }
     }

@@ -40,7 +40,8 @@ def expand(contract):
 
 
 def functions():
-    """[(name, family, doc comment, contract text, prototype)]"""
+    """[(name, family, doc comment, contract text, prototype)]; family: 'both'
+    (cbx_api.h), '64' (certbox.h) or '32' (certbox.h's binary32 twins)"""
     out = []
     for fname, fam in (('cbx_api.h', 'both'), ('certbox.h', '64')):
         text = open(os.path.join(ROOT, 'include', fname), encoding='utf-8').read()
@@ -52,7 +53,10 @@ def functions():
             doc = docs[-1] if docs else ''
             doc = re.sub(r'^/\*\s?|\s*\*/$', '', doc)
             doc = '\n'.join(re.sub(r'^\s*\* ?', '', l) for l in doc.splitlines()).strip()
-            out.append((m.group(4), fam, doc, expand(m.group(2)), ' '.join(m.group(3).split())))
+            proto = ' '.join(m.group(3).split())
+            # certbox.h's binary32 twins (float inputs over a binary64 call)
+            own = '32' if fam == '64' and 'cbx_projf' in proto else fam
+            out.append((m.group(4), own, doc, expand(m.group(2)), proto))
     return out
 
 
