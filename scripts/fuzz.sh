@@ -5,12 +5,16 @@
 #
 # SECONDS: time per harness (default 60), passed to -max_total_time.
 # HARNESS: any of transform_box transform_cbox box_to_cbox cbox_to_box
-#          sphere_box ellipsoid_box plane project psphere pnear pball gltf (default: all twelve,
-#          one after the other).  plane (tests/fuzz/fuzz_plane.c): the 2D
-#          family; project (tests/fuzz/fuzz_project.c): the projective bound;
+#          sphere_box ellipsoid_box plane project psphere pnear pball pwide gltf
+#          (default: all thirteen, one after the other).  plane
+#          (tests/fuzz/fuzz_plane.c): the 2D family; project
+#          (tests/fuzz/fuzz_project.c): the projective bound;
 #          psphere (tests/fuzz/fuzz_psphere.c): a ball under a projective map;
 #          pnear (tests/fuzz/fuzz_pnear.c): a box clipped at a near plane;
-#          pball (tests/fuzz/fuzz_pball.c): a ball clipped at a near plane.
+#          pball (tests/fuzz/fuzz_pball.c): a ball clipped at a near plane;
+#          pwide (tests/fuzz/fuzz_pwide.c): the binary32 twins of those three
+#          (cbx_project_spheref, cbx_project_box_nearf,
+#          cbx_project_sphere_nearf) against binary64 and the exact oracles.
 #
 # gltf (tests/fuzz/fuzz_gltf.c): the scene tool's glTF reader
 # (tools/certbox/gltf.c) on arbitrary file contents, against the exact oracle
@@ -45,7 +49,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT" || exit 2
 SECS=${1:-60}
 [ $# -gt 0 ] && shift
-ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane project psphere pnear pball gltf"
+ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane project psphere pnear pball pwide gltf"
 GLTFDIR=/usr/share/assimp/models/glTF2
 # the gltf harness's seeds (self-contained files: GLB, data: URIs; and a few
 # refused ones)

@@ -8,7 +8,8 @@
  * Each seed is the control byte followed by the doubles in the order the
  * harness reads them, encoded with fz_encode() (fuzz_common.h): one byte
  * for a special value, 9 bytes otherwise.  Every seed is decoded back and
- * compared bit for bit before it is written.
+ * compared bit for bit before it is written.  fuzz_pwide reads floats, 4
+ * raw bytes each: its seeds are written by seed_f32 instead.
  */
 #include <errno.h>
 #include <sys/stat.h>
@@ -453,6 +454,82 @@ static void pball(void)
     seed(H, "inf-radius", 0x00, 21, CAM90, 0, 0, -1, INF, 0.1);
 }
 
+/* fuzz_pwide: its floats are 4 raw bytes each (little-endian binary32),
+ * not fz_encode()'s doubles: seed_f32 writes the control byte, then each
+ * value rounded to float (every value here is in float's range).  Control
+ * bits 0-1 the twin (0 spheref, 1 box_nearf, 2 sphere_nearf), 2 camera row,
+ * 3 center in front / box ordered, 4 |wn|, 5 exponents folded, 6 W clear;
+ * then the 16 map entries and c0, c1, c2, r (spheref), lo0, hi0, lo1, hi1,
+ * lo2, hi2, wn (box_nearf) or c0, c1, c2, r, wn (sphere_nearf)
+ * (tests/fuzz/fuzz_pwide.c). */
+static void seed_f32(const char *harness, const char *name, unsigned ctl,
+                     const double *v, size_t n, size_t want)
+{
+    uint8_t buf[1024];
+    size_t len = 0, k;
+    char path[1024];
+    FILE *f;
+
+    if (n != want) {
+        fprintf(stderr, "%s/%s: %lu values, the harness reads %lu\n", harness, name,
+                (unsigned long)n, (unsigned long)want);
+        exit(1);
+    }
+    buf[len++] = (uint8_t)ctl;
+    for (k = 0; k < n; k++) {
+        float x = (float)v[k];
+        uint32_t u;
+        int j;
+        memcpy(&u, &x, sizeof u);
+        for (j = 0; j < 4; j++) buf[len++] = (uint8_t)(u >> (8 * j));
+    }
+    snprintf(path, sizeof path, "%s/%s", outdir, harness);
+    mkdir_p(path);
+    snprintf(path, sizeof path, "%s/%s/%s", outdir, harness, name);
+    f = fopen(path, "wb");
+    if (!f || fwrite(buf, 1, len, f) != len || fclose(f) != 0) {
+        perror(path);
+        exit(1);
+    }
+    nwritten++;
+}
+
+#define seedf(h, name, ctl, n, ...)                                             \
+    seed_f32(h, name, ctl, (const double[]){ __VA_ARGS__ },                     \
+             sizeof((const double[]){ __VA_ARGS__ }) / sizeof(double), n)
+
+static void pwide(void)
+{
+    const char *H = "pwide";
+    /* spheref: 20 floats */
+    seedf(H, "sph-camera-front", 0x00, 20, CAM90, 0.2, -0.1, -5, 1);
+    seedf(H, "sph-camera-front-forced", 0x0c, 20, CAM90, 0.2, -0.1, 5, 1);
+    seedf(H, "sph-affine-w-const", 0x00, 20, 0.6, -0.8, 0, 5, 0.8, 0.6, 0, -5, 0, 0, 1, 0, 0, 0, 0, 3,
+          1, 2, 3, 0.5);
+    seedf(H, "sph-far-tiny", 0x00, 20, 1e6, 0, 0, 0, 0, 1e6, 0, 0, 0, 0, -1, -0.2, 0, 0, -1, 0,
+          1e-3, -1e-3, -1e5, 1e-4);
+    seedf(H, "sph-camera-behind", 0x00, 20, CAM90, 0, 0, 3, 1);
+    seedf(H, "sph-nan-radius", 0x00, 20, CAM90, 0, 0, -5, NaN);
+    /* box_nearf: 23 floats */
+    seedf(H, "near-camera-box-front", 0x01, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -5.5, -4.5, 0.1);
+    seedf(H, "near-camera-box-crossing", 0x01, 23, CAM90, -0.5, 0.5, -0.5, 0.5, -1, 1, 0.1);
+    seedf(H, "near-camera-huge-box", 0x09, 23, CAM90, -1e6, 1e6, -1e6, 1e6, -1e6, 1e6, 0.01);
+    seedf(H, "near-w-const", 0x01, 23, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2,
+          -1, 1, -1, 1, -1, 1, 1);
+    seedf(H, "near-folded", 0x3d, 23, CAM90, 0.5, -0.5, 0.5, -0.5, 1, -1, -0.1);
+    seedf(H, "near-camera-box-behind", 0x01, 23, CAM90, -0.5, 0.5, -0.5, 0.5, 1, 2, 0.1);
+    seedf(H, "near-empty", 0x01, 23, CAM90, 1, -1, -0.5, 0.5, -5.5, -4.5, 0.1);
+    seedf(H, "near-inf-box", 0x01, 23, CAM90, -0.5, 0.5, -0.5, INF, -1, 1, 0.1);
+    /* sphere_nearf: 21 floats */
+    seedf(H, "ball-camera-front", 0x02, 21, CAM90, 0, 0, -5, 1, 0.1);
+    seedf(H, "ball-camera-crossing", 0x02, 21, CAM90, 0.5, 0, -0.5, 1, 0.1);
+    seedf(H, "ball-camera-around", 0x02, 21, CAM90, 0, 0, 0, 4, 0.1);
+    seedf(H, "ball-w-const", 0x02, 21, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, 1, 2, 3, 4, 1);
+    seedf(H, "ball-folded", 0x3e, 21, CAM90, 0.5, 0.25, 3, 2, -0.125);
+    seedf(H, "ball-camera-behind", 0x02, 21, CAM90, 0, 0, 5, 1, 0.1);
+    seedf(H, "ball-zero-wn", 0x02, 21, CAM90, 0, 0, -1, 2, 0);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -472,6 +549,7 @@ int main(int argc, char **argv)
     psphere();
     pnear();
     pball();
+    pwide();
     printf("make_corpus: %d seeds written under %s\n", nwritten, outdir);
     return 0;
 }
