@@ -28,6 +28,25 @@ int xu_empty_box(const cbx_box *o)
     return 1;
 }
 
+/* The same for the binary32 box (the twins of src/f32/cbx_pwide.c). */
+int xu_whole_boxf(const cbx_boxf *o)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(isinf(o->lo[i]) && o->lo[i] < 0 && isinf(o->hi[i]) && o->hi[i] > 0))
+            return 0;
+    return 1;
+}
+
+int xu_empty_boxf(const cbx_boxf *o)
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        if (!(isinf(o->lo[i]) && o->lo[i] > 0 && isinf(o->hi[i]) && o->hi[i] < 0))
+            return 0;
+    return 1;
+}
+
 void xu_aff_q(mpq_t q, const double m[4], mpq_t const x[3])
 {
     mpq_t t;

@@ -307,6 +307,8 @@ void xu_print_box(FILE *f, const char *label, const cbx_box *b);
  * and qsort's order on doubles. */
 int xu_whole_box(const cbx_box *o);   /* every axis [-inf, +inf] */
 int xu_empty_box(const cbx_box *o);   /* every axis lo = +inf, hi = -inf */
+int xu_whole_boxf(const cbx_boxf *o); /* the same, binary32 */
+int xu_empty_boxf(const cbx_boxf *o);
 void xu_aff_q(mpq_t q, const double m[4], mpq_t const x[3]);   /* m0 x0 + m1 x1 + m2 x2 + m3, exactly */
 void xu_dot3_q(mpq_t q, const double u[4], const double v[4]);  /* u0 v0 + u1 v1 + u2 v2, exactly */
 /* x = c + r s q, q = (2u, 2v, u^2 + v^2 - 1) / (1 + u^2 + v^2) on the unit

@@ -184,21 +184,6 @@ static float fold(float x)
     return ldexpf(m, ((e + 8) & 15) - 8);
 }
 
-static int whole_f(const cbx_boxf *o)
-{
-    int i, ok = 1;
-    for (i = 0; i < 3; i++)
-        ok &= o->lo[i] == -(float)INFINITY && o->hi[i] == (float)INFINITY;
-    return ok;
-}
-
-static int empty_f(const cbx_boxf *o)
-{
-    int i, ok = 1;
-    for (i = 0; i < 3; i++)
-        ok &= o->lo[i] == (float)INFINITY && o->hi[i] == -(float)INFINITY;
-    return ok;
-}
 
 static void fill(cbx_boxf *o)
 {
@@ -344,9 +329,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         fz_fail("%s", table == CBX_EINVAL ? "NaN without CBX_EINVAL"
                 : table == CBX_EMPTY ? "an empty float box without CBX_EMPTY"
                 : "an infinite input without CBX_ERANGE");
-    if (SF == CBX_EMPTY && !empty_f(&OF))
+    if (SF == CBX_EMPTY && !xu_empty_boxf(&OF))
         fz_fail("CBX_EMPTY without the empty box (lo = +inf, hi = -inf)");
-    if (SF != CBX_OK && SF != CBX_EMPTY && !whole_f(&OF))
+    if (SF != CBX_OK && SF != CBX_EMPTY && !xu_whole_boxf(&OF))
         fz_fail("%s without the whole space (-inf, +inf)", cbx_status_name(SF));
     if (SF == CBX_OK)
         for (i = 0; i < 3; i++) {
