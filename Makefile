@@ -176,7 +176,7 @@ demo: check-deps-test
 	@echo; echo "== the scene tool on examples/robot.scene (format: examples/scene-format.md)"
 	./$(B)/certbox examples/robot.scene
 
-TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project trs psphere pnear pball pwide
+TESTS := exact badinput cbox sphere special chain alias halfspace batch tight classes scene float ieee eft gltf imat plane project trs psphere pnear pball pwide pell
 # Each suite with its arguments: one target per run (run-NAME, san-NAME), so
 # that make -j2 (make check) spreads the runs over both cores; -Otarget
 # keeps each run's output together.  One line per suite: its name, its
@@ -208,6 +208,7 @@ $(eval $(call suite,psphere,20000 1,4000 2))
 $(eval $(call suite,pnear,20000 1,3000 2))
 $(eval $(call suite,pball,20000 1,3000 2))
 $(eval $(call suite,pwide,20000 1,6000 2))
+$(eval $(call suite,pell,20000 1,4000 2))
 $(eval $(call suite,ieee,,))
 $(eval $(call suite,scene,examples/*.scene,examples/*.scene))
 $(eval $(call suite,gltf,$(GLTFDIR) tests/data/gltf $(B)/certbox,$(GLTFDIR) tests/data/gltf $(B)/certbox))

@@ -199,7 +199,7 @@
 
 #define MAXR 101    /* timed rounds                   */
 #define MAXROWS 96  /* rows, hidden ones included     */
-#define MAXG 12     /* rows per timing group          */
+#define MAXG 16     /* rows per timing group          */
 #define SPH_PREC 320
 
 /* ---- defeating dead-code elimination --------------------------------- */
@@ -262,6 +262,8 @@ typedef struct bench_ctx {
     cbx_box *pcx;             /* boxes across the near plane               */
     double *pwn;              /* the near plane (the camera's near distance) */
     double *pxc, *pxr;        /* balls across the near plane: centres, radii */
+    double *pes;              /* ellipsoids at the balls' centres: radii    */
+    double (*per)[3][3];      /* and rotations                              */
     /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
      * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
     cbx_trs *rk0, *rk1;
@@ -457,6 +459,9 @@ REF_KERNEL(k_psph_ref, cbx_box, ref_psphere(&b->pm[i], b->psc + 3 * i, b->psr[i]
 REF_KERNEL(k_psph_box, cbx_box, ref_psphere_box8(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
 CBX_KERNEL(k_psph, cbx_box, cbx_project_sphere(&b->pm[i], b->psc + 3 * i, b->psr[i], &o[i]))
 REF_KERNEL(k_pnear_ref, cbx_box, ref_pnear(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
+REF_KERNEL(k_pell_ref, cbx_box, ref_pell(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
+REF_KERNEL(k_pell_obb, cbx_box, ref_pell_obb8(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
+CBX_KERNEL(k_pell, cbx_box, cbx_project_ellipsoid(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
 CBX_KERNEL(k_pnear_front, cbx_box, cbx_project_box_near(&b->pm[i], &b->pin[i], b->pwn[i], &o[i]))
 CBX_KERNEL(k_pnear, cbx_box, cbx_project_box_near(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
 CBX_KERNEL(k_pball_front, cbx_box, cbx_project_sphere_near(&b->pm[i], b->psc + 3 * i, b->psr[i], b->pwn[i], &o[i]))
@@ -1166,6 +1171,12 @@ static void define_rows(bench_ctx *b, const sizes *z)
                     n, P, 0, bsz, MK_NONE));
     add_row(G_P, 0, "PS", "projected ball: certbox `cbx_project_sphere` (certified closed form)", k_psph,
             n, P, 0, bsz, MK_NONE);
+    unsound(add_row(G_P, 0, "PE-R", "projected ellipsoid: the ball's closed form on the rows M^T a, RN", k_pell_ref,
+                    n, P, 0, bsz, MK_NONE));
+    unsound(add_row(G_P, 0, "PE-8", "projected ellipsoid: its oriented box's 8 corners divided by w, RN (looser)",
+                    k_pell_obb, n, P, 0, bsz, MK_NONE));
+    add_row(G_P, 0, "PE", "projected ellipsoid: certbox `cbx_project_ellipsoid` (certified closed form)", k_pell,
+            n, P, 0, bsz, MK_NONE);
     add_row(G_P, 0, "PN", "box in front, clipped at the near plane: certbox `cbx_project_box_near`",
             k_pnear_front, n, P, 0, bsz, MK_NONE);
     unsound(add_row(G_P, 0, "PN-XR", "box across the near plane: its clipped vertices divided by w, RN",
@@ -1583,6 +1594,8 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     b->pwn = xmalloc(n * sizeof *b->pwn);
     b->pxc = xmalloc(3 * n * sizeof *b->pxc);
     b->pxr = xmalloc(n * sizeof *b->pxr);
+    b->pes = xmalloc(3 * n * sizeof *b->pes);
+    b->per = xmalloc(n * sizeof *b->per);
     rng.s = seed + 7;
     for (k = 0; k < n; k++) {
         double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
@@ -1634,6 +1647,16 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
             b->pxc[3 * k + i] = c;    /* the ball inscribed in that cube */
         }
         b->pxr[k] = h;
+    }
+    /* ellipsoids at the balls' centres (their own generator, so that the
+     * other rows' cases stay the same): a random rotation, radii the ball's
+     * radius times 1, 1/4 .. 1 and 1/16 .. 1 (inside the ball) */
+    rng.s = seed + 11;
+    for (k = 0; k < n; k++) {
+        xu_rand_rotation(&rng, b->per[k]);
+        b->pes[3 * k] = b->psr[k];
+        b->pes[3 * k + 1] = b->psr[k] * urand(&rng, 0.25, 1);
+        b->pes[3 * k + 2] = b->psr[k] * urand(&rng, 0.0625, 1);
     }
     gen_rot(b, n, seed);
 }

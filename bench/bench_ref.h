@@ -164,6 +164,53 @@ static inline void ref_psphere_box8(const cbx_proj *p, const double c[3], double
     ref_proj8(p, &b, out);
 }
 
+/* The projected ellipsoid c + rot diag(s) q, |q| <= 1, in closed form in
+ * round-to-nearest: the ball's formula on the rows M^T a, M^T b (M = rot
+ * diag(s)), radius 1 (unsound). */
+static inline void ref_pell(const cbx_proj *p, const double c[3], const double s[3], const double rot[3][3],
+                            cbx_box *out)
+{
+    double q[4][4];
+    const double z[3] = {0, 0, 0};
+    cbx_proj f;
+    int i, j;
+    for (i = 0; i < 4; i++) {
+        const double *a = p->m[i];
+        for (j = 0; j < 3; j++)
+            q[i][j] = s[j] * (rot[0][j] * a[0] + rot[1][j] * a[1] + rot[2][j] * a[2]);
+        q[i][3] = a[0] * c[0] + a[1] * c[1] + a[2] * c[2] + a[3];
+    }
+    memcpy(f.m, q, sizeof q);
+    ref_psphere(&f, z, 1.0, out);
+}
+
+/* The projected ellipsoid through its oriented box c + M [-1, 1]^3: its 8
+ * corners, each rounded to nearest, divided by w (what an engine does with
+ * an OBB; unsound, and looser). */
+static inline void ref_pell_obb8(const cbx_proj *p, const double c[3], const double s[3],
+                                 const double rot[3][3], cbx_box *out)
+{
+    int k, i, j;
+    for (i = 0; i < 3; i++) {
+        out->lo[i] = HUGE_VAL;
+        out->hi[i] = -HUGE_VAL;
+    }
+    for (k = 0; k < 8; k++) {
+        double x[3], w;
+        for (i = 0; i < 3; i++) {
+            x[i] = c[i];
+            for (j = 0; j < 3; j++)
+                x[i] += rot[i][j] * (((k >> j) & 1) ? s[j] : -s[j]);
+        }
+        w = p->m[3][0] * x[0] + p->m[3][1] * x[1] + p->m[3][2] * x[2] + p->m[3][3];
+        for (i = 0; i < 3; i++) {
+            double y = (p->m[i][0] * x[0] + p->m[i][1] * x[1] + p->m[i][2] * x[2] + p->m[i][3]) / w;
+            out->lo[i] = ref_min(out->lo[i], y);
+            out->hi[i] = ref_max(out->hi[i], y);
+        }
+    }
+}
+
 static inline void ref_arvo_box(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
     double lo[3], hi[3];

@@ -400,6 +400,41 @@ static void show_project_sphere(const cbx_proj *p)
     printf("\n");
 }
 
+/* An ellipsoid under the same projection (cbx_project_ellipsoid): a disk
+ * of radius 0.6 tilted 30 degrees about x with a thickness of 0.05, judged
+ * by the exact oracle (tests/psph_oracle.c: every end against the exact
+ * ends, MPFR, and exact points of the ellipsoid), beside the box of its
+ * bounding ball. */
+static int ell_failures;
+static void ell_fail(const char *what)
+{
+    ell_failures++;
+    printf("  oracle: %s\n", what);
+}
+
+static void show_project_ellipsoid(const cbx_proj *p)
+{
+    static const double c[3] = {0.3, -0.2, -3.5};
+    static const double radii[3] = {0.6, 0.6, 0.05};
+    static const double rot[3][3] = {{1, 0, 0}, {0, 0.8660254037844386, -0.5}, {0, 0.5, 0.8660254037844386}};
+    cbx_box out, ball;
+    pso_stats s;
+    cbx_status st = cbx_project_ellipsoid(p, c, radii, rot, &out);
+    cbx_status sb = cbx_project_sphere(p, c, 0.6, &ball);
+    int i;
+    printf("  a disk of radius 0.6 and thickness 0.1 at (%g, %g, %g), tilted 30 degrees:\n"
+           "  cbx_project_ellipsoid: status %s (its bounding ball: %s)\n",
+           c[0], c[1], c[2], cbx_status_name(st), cbx_status_name(sb));
+    for (i = 0; i < 3; i++)
+        printf("  ndc%d in [%22.17g, %22.17g]  (the ball's: [%.6g, %.6g])\n", i, out.lo[i], out.hi[i],
+               ball.lo[i], ball.hi[i]);
+    pso_init(&s, 1);
+    pso_judge_ell((const double (*)[4])p->m, c, radii, rot, st, &out, &s, ell_fail);
+    printf("  contains the exact bound, each end within 2^-20 of it: %s (%ld exact checks)\n\n",
+           ell_failures == 0 && st == CBX_OK ? "yes" : "NO", s.passed);
+    pso_free(&s);
+}
+
 /* The cube around the camera clipped at the near plane W = 0.1
  * (cbx_project_box_near): the bound of its visible part, judged by the
  * exact oracle (tests/pnear_oracle.c: every end against the exact end over
@@ -508,6 +543,7 @@ static void show_project(int n)
     mpq_clears(X, W, r, lo, hi, t, NULL);
     show_project_near(&p, &behind);
     show_project_sphere(&p);
+    show_project_ellipsoid(&p);
     show_project_ball_near(&p);
 }
 

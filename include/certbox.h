@@ -172,6 +172,7 @@ typedef enum cbx_class {
 #include "cbx_pnear.h"
 #include "cbx_pball.h"
 #include "cbx_pwide.h"
+#include "cbx_pell.h"
 #endif
 
 
@@ -637,6 +638,82 @@ cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn,
     disjoint behaviors;
 */
 cbx_status cbx_project_sphere_near(const cbx_proj *p, const double c[3], double r, double wn, cbx_box *out);
+
+/* ---- an ellipsoid under a projective map --------------------------------
+ * cbx_project_ellipsoid: the box of {(X_0/W, X_1/W, X_2/W)} over every real
+ * point of the ellipsoid center + rot * diag(radii) * q, |q| <= 1 (as
+ * cbx_ellipsoid_box: rot need not be orthogonal, radii may be negative or
+ * zero), X_i and W the rows of *p as for cbx_project_sphere: the projected
+ * ellipsoid's screen or NDC box, the bound of its outline (a conic) in
+ * closed form.  In the ellipsoid's frame it is the unit ball under the rows
+ * M^T X, M = rot * diag(radii), so the method and the guarantees are those
+ * of cbx_project_sphere; M^T X is never rounded (every enclosure is of the
+ * exact value).  Proven (specs/cbx_pell.h: pe_axis, pe_tight): with CBX_OK,
+ * W > 0 at every real point of the ellipsoid and lo_i W <= X_i <= hi_i W
+ * there, and some point has X_i / W above hi_i - 2^-20 (1 + |hi_i|) (below
+ * lo_i + 2^-20 (1 + |lo_i|)); measured, the ends are within a few units in
+ * the last place (tests/test_pell.c).
+ *   NaN in *p, center, radii or rot     -> CBX_EINVAL, *out the whole space
+ *   a linear entry of *p or a center coordinate above 2^60 in magnitude, a
+ *   translation above 2^120, an entry of rot or a radius above 2^30 (or
+ *   infinite)                           -> CBX_ERANGE, *out the whole space
+ *   the ellipsoid not clear of the camera plane W = 0 (W's least value on
+ *   it, enclosed, not above 0; always when it touches or crosses the plane
+ *   or lies behind it: proven)          -> CBX_EBEHIND, *out the whole space
+ *   an end above 2^99 in magnitude, or one that cannot be certified within
+ *   2^-20 (an ellipsoid very near the camera plane for its distance from
+ *   the origin, as for cbx_project_sphere)
+ *                                       -> CBX_ERANGE, *out the whole space
+ * Binary64.  *out may not overlap the inputs. */
+/*@ requires valid: \valid_read(p) && \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, p) && \separated(out, center + (0 .. 2))
+                  && \separated(out, radii + (0 .. 2)) && \separated(out, rot + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes pe_nan(p, center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_space(out);
+    behavior ellipsoid_input:
+      assumes !pe_nan(p, center, radii, rot);
+      ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
+      ensures whole: \result != CBX_OK ==> whole_space(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(pe_dom(p, center, radii, rot));
+      ensures behind: \old(pe_dom(p, center, radii, rot))
+        && !pe_front(\old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+                     \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+                     \old(radii[0]), \old(radii[1]), \old(radii[2])) ==> \result == CBX_EBEHIND;
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && pe_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]))
+        && pe_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]));
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && pe_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]))
+        && pe_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]));
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && pe_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]))
+        && pe_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_ellipsoid(const cbx_proj *p, const double center[3], const double radii[3],
+                                 const double rot[3][3], cbx_box *out);
 
 #endif /* binary64 only */
 

@@ -7,7 +7,7 @@
                                         the functions of TU that call NAME
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
-proj_f.c, trs.c, psph.c, pnear.c, pball.c, pwide.c).  It is
+proj_f.c, trs.c, psph.c, pnear.c, pball.c, pwide.c, pell.c).  It is
 preprocessed as Frama-C preprocesses it (gcc -E -C -D__FRAMAC__, the
 library's include folders of scripts/incs.sh and specs/); each function
 definition is then attributed to the file the line markers name, under the
@@ -40,6 +40,9 @@ follow the layers of src/:
     pball    a ball under a projective map clipped at a near plane
              (proofs/pball.c): the functions of src/f64/cbx_pball.c (the
              enclosures of cbx_paff.h and cbx_pgap.h: psph)
+    pell     an ellipsoid under a projective map (proofs/pell.c): the
+             functions of src/f64/cbx_pell.c (the enclosures of cbx_paff.h
+             and cbx_pgap.h they call: psph)
     pwide    the binary32 twins of the three above (proofs/pwide.c): the
              functions of src/f32/cbx_pwide.c (the binary64 functions they
              call are proven in psph, pnear, pball)
@@ -74,7 +77,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # The units where only one group is proven (the rest of their code is
 # tested only), so a call from the rest establishes no precondition:
 # proofs/trs.c, where src/f64/cbx_trs.c's path and loop are not proven.
-PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph,psphrace', 'pnear.c': 'pnear', 'pball.c': 'pball', 'pwide.c': 'pwide'}
+PARTIAL = {'trs.c': 'trs', 'psph.c': 'psph,psphrace', 'pnear.c': 'pnear', 'pball.c': 'pball', 'pwide.c': 'pwide',
+           'pell.c': 'pell'}
 MARK = '/* proof: -wp-split */'
 RACE = '/* proof: race */'
 DEF = re.compile(r'^(?!typedef\b|extern\b)[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\s*\(')
@@ -167,12 +171,13 @@ def group(defs, g):
     pnear = ('src/f64/cbx_pnear.c',)
     pball = ('src/f64/cbx_pball.c',)
     pwide = ('src/f32/cbx_pwide.c',)
+    pell = ('src/f64/cbx_pell.c',)
     if g == 'split':
         return [n for f, n, s in defs if s == 'split' and f not in ball]
     if g == 'kernels':
         return [n for f, n, s in defs if s != 'split' and (under(f, 'src/core/', '.h') or under(f, 'src/algo/', '.h'))]
     if g == 'f64':
-        return [n for f, n, s in defs if s != 'split' and under(f, 'src/f64/', '.c') and f not in imat + psph + pnear + pball]
+        return [n for f, n, s in defs if s != 'split' and under(f, 'src/f64/', '.c') and f not in imat + psph + pnear + pball + pell]
     if g == 'imat':
         return [n for f, n, s in defs if f in imat]
     if g == 'trs':
@@ -187,6 +192,8 @@ def group(defs, g):
         return [n for f, n, s in defs if f in pball]
     if g == 'pwide':
         return [n for f, n, s in defs if f in pwide]
+    if g == 'pell':
+        return [n for f, n, s in defs if f in pell]
     if g == 'proj':
         return [n for f, n, s in defs if s != 'split' and f in proj]
     if g == 'projsplit':

@@ -4,7 +4,7 @@
 # checkout's root, with WHY3CONFIG set; proofs/run.sh does both).
 #   L64, L32  the lemmas of each family (proofs/lemmas.c, proofs/lemmas_f.c)
 #   LP64      the lemmas of specs/cbx_psph.h, cbx_pnear.h, cbx_pball.h,
-#             cbx_pwide.h
+#             cbx_pwide.h, cbx_pell.h
 #             (proofs/lemmas_p.c; the goals: those files' lemmas, by name)
 #   A64, A32  the functions marked /* proof: -wp-split */ in their source
 #             (their two-sided postconditions over several behaviors time
@@ -40,6 +40,9 @@
 #             (proofs/pball.c: src/f64/cbx_pball.c, on T64 and the
 #             enclosures of PS64, with the lemmas of specs/cbx_pball.h);
 #             its smoke tests
+#   PE64, SPE64 an ellipsoid under a projective map (proofs/pell.c:
+#             src/f64/cbx_pell.c, on the enclosures of PS64, with the
+#             lemmas of specs/cbx_pell.h, proven in LP64)
 #   PW, SPW   the binary32 twins of those three (proofs/pwide.c:
 #             src/f32/cbx_pwide.c, on the contracts of PS64, PN64, PB64,
 #             with the lemmas of specs/cbx_pwide.h, proven in LP64): both
@@ -137,6 +140,8 @@ case $name in
   SPN64) TU=proofs/pnear.c; OPTS="$SMOKE $NOGOALS"; SG=pnear ;;
   PB64) TU=proofs/pball.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pball)" ;;
   SPB64) TU=proofs/pball.c; OPTS="$SMOKE $NOGOALS"; SG=pball ;;
+  PE64) TU=proofs/pell.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pell)" ;;
+  SPE64) TU=proofs/pell.c; OPTS="$SMOKE $NOGOALS"; SG=pell ;;
   PW) TU=proofs/pwide.c; OPTS=$WP; SEL="-wp-fct $(fcts $TU pwide)" ;;
   SPW) TU=proofs/pwide.c; OPTS="$SMOKE $NOGOALS"; SG=pwide ;;
   ST64) TU=proofs/trs.c; OPTS="$SMOKE $NOGOALS"; SG=trs ;;
@@ -145,7 +150,7 @@ case $name in
   SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SG=proj,projsplit ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   LP64) TU=proofs/lemmas_p.c; OPTS=$WP
-    SEL="-wp-prop $(grep -ho 'lemma [a-z0-9_]*:' specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h specs/cbx_pwide.h | sed 's/lemma //; s/://' | paste -sd, -)" ;;
+    SEL="-wp-prop $(grep -ho 'lemma [a-z0-9_]*:' specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h specs/cbx_pwide.h specs/cbx_pell.h | sed 's/lemma //; s/://' | paste -sd, -)" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
   BS64|BS32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP $BALL"; SEL="-wp-fct $(fcts $TU ball)" ;;
   BSA64|BSA32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split $BALL"; SEL="-wp-fct $(fcts $TU ballsplit)" ;;

@@ -39,6 +39,8 @@ JOBS = {
     'PB64': 'binary64 ball clipped at a near plane (proofs/pball.c)',
     'SPN64': 'binary64 clipped-box smoke tests',
     'SPB64': 'binary64 clipped-ball smoke tests',
+    'PE64': 'binary64 ellipsoid under a projective map (proofs/pell.c)',
+    'SPE64': 'binary64 projected-ellipsoid smoke tests',
     'PW': 'binary32 twins of the projected ball and the clipped box and ball (proofs/pwide.c)',
     'SPW': 'binary32 projective twins smoke tests',
     'P64': 'binary64 projective bound (proofs/proj.c)', 'P32': 'binary32 projective bound (proofs/proj_f.c)',

@@ -38,7 +38,7 @@ export CBX_WP_PAR="${CBX_WP_PAR:-$NPROC}"
 # longest first (the wall times, three jobs at a time, of the clean-clone
 # run of a4e3f73, 2026-11-28: L64 took 151 s there, started 21st), so that
 # the pool ends evenly
-LIST="B64a T64 PB64 PA64 L64 PN64 K64 PA32 B64b B32 K32 A64 I64 PS64 S64 BS64 P64 P32 BS32 S32 A32 L32 LP64 BSA64 BSA32 SPS64 PSR64 ST64 SP32 SP64 SPN64 SPB64 SI64 PW SPW"
+LIST="B64a T64 PB64 PA64 L64 PN64 K64 PA32 B64b B32 K32 A64 I64 PS64 PE64 S64 BS64 P64 P32 BS32 S32 A32 L32 LP64 BSA64 BSA32 SPS64 PSR64 ST64 SP32 SP64 SPN64 SPB64 SPE64 SI64 PW SPW"
 echo "proof: $(echo $LIST | wc -w) jobs, $JOBS at a time, $CBX_WP_PAR prover processes each"
 start=$(date +%s)
 # a failed job shows in the report (RESULT: NOT PROVED), not here

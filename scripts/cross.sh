@@ -30,7 +30,7 @@ LIB="src/*/cbx_*.c"
 # compared with build/test_NAME_nofma; eft: both two_prod forms, GMP)
 GLTFDIR=/usr/share/assimp/models/glTF2
 GLTF_N=${CROSS_GLTF_N:-10000}
-SUITES=${CROSS_SUITES:-"classes:10000,1 exact:100000,1 float:25000,1 sphere:10000,1 trs:2000,1 psphere:4000,1 pnear:4000,1 pball:2000,1 pwide:2000,1 tight:10,1 tight_nofma:10,1 batch:20,1 alias:10000,1 cbox:30000,1 imat:20000,5000,1 halfspace:20,1 eft:100,1 special: chain:200,5,1 badinput:"}
+SUITES=${CROSS_SUITES:-"classes:10000,1 exact:100000,1 float:25000,1 sphere:10000,1 trs:2000,1 psphere:4000,1 pnear:4000,1 pball:2000,1 pwide:2000,1 pell:3000,1 tight:10,1 tight_nofma:10,1 batch:20,1 alias:10000,1 cbox:30000,1 imat:20000,5000,1 halfspace:20,1 eft:100,1 special: chain:200,5,1 badinput:"}
 # one suite: build it for ARM (against the ARM library built once below),
 # run it here and under qemu, compare; the verdict line goes to
 # $B/NAME.verdict, with the suite's time

@@ -67,7 +67,7 @@ SUITES = [
     ('badinput', []), ('special', []), ('exact', ['100000', '1']), ('cbox', ['30000', '1']),
     ('sphere', ['20000', '1']), ('alias', ['10000', '1']), ('halfspace', ['20', '1']),
     ('chain', ['200', '5', '1']), ('batch', ['50', '1']), ('tight', ['10', '1']),
-    ('classes', ['20000', '1']), ('float', ['50000', '1']), ('imat', ['40000', '10000', '1']), ('plane', ['20000', '1']), ('project', ['4000', '1']), ('trs', ['3000', '1']), ('psphere', ['4000', '1']), ('pnear', ['4000', '1']), ('pball', ['4000', '1']), ('pwide', ['3000', '1']), ('ieee', []),
+    ('classes', ['20000', '1']), ('float', ['50000', '1']), ('imat', ['40000', '10000', '1']), ('plane', ['20000', '1']), ('project', ['4000', '1']), ('trs', ['3000', '1']), ('psphere', ['4000', '1']), ('pnear', ['4000', '1']), ('pball', ['4000', '1']), ('pwide', ['3000', '1']), ('pell', ['4000', '1']), ('ieee', []),
     ('ieee', ['ftz', '4']), ('ieee', ['ftzonly', '4']), ('ieee', ['daz', '4']), ('ieee', ['up', '8']), ('ieee', ['down', '8']), ('ieee', ['zero', '8']),
     ('scene', sorted(glob.glob(os.path.join(ROOT, 'examples', '*.scene')))),
     # the scene tool's glTF reader (tools/certbox/gltf.c), against GMP, on

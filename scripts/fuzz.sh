@@ -5,11 +5,12 @@
 #
 # SECONDS: time per harness (default 60), passed to -max_total_time.
 # HARNESS: any of transform_box transform_cbox box_to_cbox cbox_to_box
-#          sphere_box ellipsoid_box plane project psphere pnear pball pwide gltf
-#          (default: all thirteen, one after the other).  plane
+#          sphere_box ellipsoid_box plane project psphere pell pnear pball pwide
+#          gltf (default: all fourteen, one after the other).  plane
 #          (tests/fuzz/fuzz_plane.c): the 2D family; project
 #          (tests/fuzz/fuzz_project.c): the projective bound;
 #          psphere (tests/fuzz/fuzz_psphere.c): a ball under a projective map;
+#          pell (tests/fuzz/fuzz_pell.c): an ellipsoid under a projective map;
 #          pnear (tests/fuzz/fuzz_pnear.c): a box clipped at a near plane;
 #          pball (tests/fuzz/fuzz_pball.c): a ball clipped at a near plane;
 #          pwide (tests/fuzz/fuzz_pwide.c): the binary32 twins of those three
@@ -49,7 +50,7 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 cd "$ROOT" || exit 2
 SECS=${1:-60}
 [ $# -gt 0 ] && shift
-ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane project psphere pnear pball pwide gltf"
+ALL="transform_box transform_cbox box_to_cbox cbox_to_box sphere_box ellipsoid_box plane project psphere pell pnear pball pwide gltf"
 GLTFDIR=/usr/share/assimp/models/glTF2
 # the gltf harness's seeds (self-contained files: GLB, data: URIs; and a few
 # refused ones)

@@ -37,6 +37,7 @@
 #   MUT_PNEAR_N random cameras and maps of test_pnear (default 5000)
 #   MUT_PBALL_N random cameras and maps of test_pball (default 3000)
 #   MUT_PWIDE_N random cases of test_pwide (default 2000)
+#   MUT_PELL_N  random cameras and maps of test_pell (default 3000)
 #   MUT_SEED      seed of the random cases     (default 1)
 #   MUT_TIMEOUT   seconds per test run         (default 30)
 #   MUT_LIST      mutant list                  (default scripts/mutants.txt)
@@ -170,8 +171,8 @@ cp -p "$ROOT/scripts/testutil.sh" "$BASE/scripts/testutil.sh"
 cp -p "$ROOT/README.md" "$BASE/README.md"
 rm -rf "$BASE/build"
 
-TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_eft test_float test_classes test_plane test_project test_chain test_trs test_psphere test_pnear test_pball test_pwide"
-BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_eft build/test_float build/test_classes build/test_plane build/test_project build/test_chain build/test_trs build/test_psphere build/test_pnear build/test_pball build/test_pwide"
+TESTS="test_badinput test_exact test_cbox test_sphere test_special test_alias test_halfspace test_batch test_tight test_eft test_float test_classes test_plane test_project test_chain test_trs test_psphere test_pnear test_pball test_pwide test_pell"
+BINS="build/test_badinput build/test_exact build/test_cbox build/test_sphere build/test_special build/test_alias build/test_halfspace build/test_batch build/test_tight build/test_eft build/test_float build/test_classes build/test_plane build/test_project build/test_chain build/test_trs build/test_psphere build/test_pnear build/test_pball build/test_pwide build/test_pell"
 # the scene tool's glTF reader (tools/certbox/gltf.c): test_gltf, which also runs
 # the tool; only with jansson (the Makefile's optional dependency)
 GLTF=0
@@ -204,6 +205,7 @@ args_of() {
     test_pnear) echo "${MUT_PNEAR_N:-5000} $SEED" ;;
     test_pball) echo "${MUT_PBALL_N:-3000} $SEED" ;;
     test_pwide) echo "${MUT_PWIDE_N:-2000} $SEED" ;;
+    test_pell) echo "${MUT_PELL_N:-3000} $SEED" ;;
     test_gltf) echo "/usr/share/assimp/models/glTF2 tests/data/gltf build/certbox ${MUT_GLTF_N:-20000}" ;;
     esac
 }

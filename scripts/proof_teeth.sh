@@ -217,6 +217,16 @@ case_ twin-down-nearest src/f32/cbx_pwide.c pw_down proofs/pwide.c fin,dn ensure
 case_ twin-down-twice src/f32/cbx_pwide.c pw_narrow proofs/pwide.c st,ok0,ok1,ok2,empty,whole ensures_ok0 \
   "        o->lo[0] = pw_down(b->lo[0]); o->hi[0] = pw_up(b->hi[0]);" \
   "        o->lo[0] = pw_down(pw_down(b->lo[0])); o->hi[0] = pw_up(b->hi[0]);" - &
+# 35. the projected ellipsoid's entry of M^T k(t) without its radius
+#    (unsound where a radius exceeds 1: the enclosure must fail)
+case_ pell-radius-dropped src/f64/cbx_pell.c pe_col proofs/pell.c i01,i,dr,b1,b1l,b1h,b2,in,x 'assert_in\|ensures_in' \
+  "    v = iv_mul(iv_pt(s), d);" \
+  "    v = d;" - &
+# 36. the projected ellipsoid's upper end one unit further out (sound, not
+#    tight: the tightness that pe_tight carries must fail)
+case_ pell-hi-loose src/f64/cbx_pell.c pe_axis_of proofs/pell.c cov,tight,ok assert_tight \
+  "            x.hi = h.v;" \
+  "            x.hi = h.v + 1.0;" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

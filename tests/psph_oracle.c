@@ -1,9 +1,12 @@
 /*
  * psph_oracle.c: the exact oracle of a ball under a projective map
- * (cbx_project_sphere), shared by tests/test_psphere.c and the fuzz harness
- * tests/fuzz/fuzz_psphere.c.  pso_judge decides, for one call, every
- * clause the tests check (tests/psph_oracle.h), in GMP rationals and MPFR
- * with directed rounding.
+ * (cbx_project_sphere), shared by tests/test_psphere.c and the fuzz
+ * harness tests/fuzz/fuzz_psphere.c, and of an ellipsoid
+ * (cbx_project_ellipsoid: tests/test_pell.c, tests/fuzz/fuzz_pell.c).
+ * pso_judge and pso_judge_ell decide, for one call, every clause the tests
+ * check (tests/psph_oracle.h), in GMP rationals and MPFR with directed
+ * rounding.  Both shapes are {c + M q : |q| <= 1} (the ball: M = r I); the
+ * exact quantities are the quadratic form Q = M M^T of the map's rows.
  */
 #include <math.h>
 #include <stdint.h>
@@ -21,6 +24,8 @@
 #define PREC 300
 
 static double P[4][4], C[3], R;   /* the case being judged */
+static int ELL;                   /* an ellipsoid: M = ROT diag(RAD) */
+static double RAD[3], ROT[3][3];
 static pso_stats *S;
 static void (*FAIL)(const char *what);
 
@@ -35,24 +40,83 @@ static void check(int ok, const char *what)
 }
 
 /* ---- exact pieces ---------------------------------------------------------- */
-/* sign of B - |r| |b| (B = W(c)), exactly: B > 0 and B^2 > r^2 |b|^2 */
-static int front_sign(const mpq_t B, const mpq_t r2, const mpq_t bb)
+/* u^T Q v for the linear parts u, v of two rows (Q = M M^T: the ball's
+ * r^2 u.v; the ellipsoid's (M^T u).(M^T v)), exactly */
+static void quad_q(mpq_t q, const double u[4], const double v[4])
 {
-    mpq_t t, u;
+    mpq_t t, x, y, e;
+    int i, j;
+    if (!ELL) {
+        xu_dot3_q(q, u, v);
+        mpq_init(t);
+        mpq_set_d(t, R);
+        mpq_mul(q, q, t);
+        mpq_mul(q, q, t);
+        mpq_clear(t);
+        return;
+    }
+    mpq_inits(t, x, y, e, NULL);
+    mpq_set_ui(q, 0, 1);
+    for (j = 0; j < 3; j++) {          /* (M^T u)_j = rad_j sum_i rot_ij u_i */
+        mpq_set_ui(x, 0, 1);
+        mpq_set_ui(y, 0, 1);
+        for (i = 0; i < 3; i++) {
+            mpq_set_d(e, ROT[i][j]);
+            mpq_set_d(t, u[i]);
+            mpq_mul(t, t, e);
+            mpq_add(x, x, t);
+            mpq_set_d(t, v[i]);
+            mpq_mul(t, t, e);
+            mpq_add(y, y, t);
+        }
+        mpq_set_d(e, RAD[j]);
+        mpq_mul(x, x, e);
+        mpq_mul(x, x, e);
+        mpq_mul(x, x, y);
+        mpq_add(q, q, x);
+    }
+    mpq_clears(t, x, y, e, NULL);
+}
+
+/* a bound on the shape's scale, for the rounding allowance below: the
+ * ball's |r| (its norm's absolute rounding, about 2^-1066 under the square
+ * root, is scaled by |r| after it); the ellipsoid's
+ * 1 + sum_j |rad_j| (1 + sum_i |rot_ij|) (its norm is the last operation:
+ * the square root of that rounding, about 2^-533, stays unscaled) */
+static double shape_scale(void)
+{
+    double m = 1;
+    int i, j;
+    if (!ELL)
+        return fabs(R);
+    for (j = 0; j < 3; j++) {
+        double c = 1;
+        for (i = 0; i < 3; i++)
+            c += fabs(ROT[i][j]);
+        m += fabs(RAD[j]) * c;
+    }
+    return m;
+}
+
+/* sign of B - |M^T b| (B = W(c), qbb = b^T Q b, the ball's r^2 |b|^2),
+ * exactly: B > 0 and B^2 > qbb */
+static int front_sign(const mpq_t B, const mpq_t qbb)
+{
+    mpq_t t;
     int s;
     if (mpq_sgn(B) <= 0)
-        return mpq_sgn(B) < 0 || mpq_sgn(r2) * mpq_sgn(bb) > 0 ? -1 : 0;
-    mpq_inits(t, u, NULL);
+        return mpq_sgn(B) < 0 || mpq_sgn(qbb) > 0 ? -1 : 0;
+    mpq_init(t);
     mpq_mul(t, B, B);
-    mpq_mul(u, r2, bb);
-    s = mpq_cmp(t, u);
-    mpq_clears(t, u, NULL);
+    s = mpq_cmp(t, qbb);
+    mpq_clear(t);
     return s > 0 ? 1 : (s < 0 ? -1 : 0);
 }
 
-/* B - |r| |b| <= eps (B + |r| |b|), eps = 2^-40: with B > 0 and m = |r| |b|,
- * (1 - eps) B <= (1 + eps) m, squared. */
-static int near_plane(const mpq_t B, const mpq_t r2, const mpq_t bb)
+/* B - m <= eps S + 2^-1000 + sc 2^-520 + eps m, eps = 2^-40, m = |M^T b|
+ * (the ball's |r| |b|), S = W(c)'s magnitude, sc the shape's scale
+ * (shape_scale): with B > 0, squared. */
+static int near_plane(const mpq_t B, const mpq_t qbb)
 {
     mpq_t t, u, e, S;
     int s, j;
@@ -74,7 +138,7 @@ static int near_plane(const mpq_t B, const mpq_t r2, const mpq_t bb)
     mpq_set_ui(u, 1, 1);
     mpq_div_2exp(u, u, 1000);
     mpq_sub(t, t, u);
-    mpq_set_d(u, fabs(R));
+    mpq_set_d(u, shape_scale());
     mpq_div_2exp(u, u, 520);   /* the square root of the norm's underflow: |r| sqrt(2^-1040) */
     mpq_sub(t, t, u);
     if (mpq_sgn(t) <= 0) {
@@ -84,8 +148,7 @@ static int near_plane(const mpq_t B, const mpq_t r2, const mpq_t bb)
         mpq_set_ui(u, 1, 1);
         mpq_add(u, u, e);
         mpq_mul(u, u, u);
-        mpq_mul(u, u, r2);
-        mpq_mul(u, u, bb);     /* ((1 + eps) |r| |b|)^2 */
+        mpq_mul(u, u, qbb);     /* ((1 + eps) |r| |b|)^2 */
         s = mpq_cmp(t, u) <= 0;
     }
     mpq_clears(t, u, e, S, NULL);
@@ -110,8 +173,8 @@ static void root_end(mpfr_t out, const mpq_t be, const mpfr_t s, int sgn, const 
     mpfr_clears(num, den, (mpfr_ptr)0);
 }
 
-/* B = W(c), bb = |b|^2, r2 = r^2 of the current case, exactly */
-static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
+/* B = W(c), qbb = b^T Q b (the ball's r^2 |b|^2) of the current case, exactly */
+static void ball_w(mpq_t B, mpq_t qbb)
 {
     mpq_t cq[3];
     int j;
@@ -120,9 +183,7 @@ static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
         mpq_set_d(cq[j], C[j]);
     }
     xu_aff_q(B, P[3], (mpq_t const *)cq);
-    xu_dot3_q(bb, P[3], P[3]);
-    mpq_set_d(r2, R);
-    mpq_mul(r2, r2, r2);
+    quad_q(qbb, P[3], P[3]);
     for (j = 0; j < 3; j++)
         mpq_clear(cq[j]);
 }
@@ -131,28 +192,25 @@ static void ball_w(mpq_t B, mpq_t bb, mpq_t r2)
  * (MPFR, PREC bits, directed rounding).  The ball must be in front. */
 static void exact_ends(int i, mpfr_t l0, mpfr_t l1, mpfr_t h0, mpfr_t h1)
 {
-    mpq_t cq[3], A, B, aa, bb, ab, r2, al, be, ga, de, t;
+    mpq_t cq[3], A, B, aa, bb, ab, al, be, ga, de, t;
     mpfr_t sd, su;
     int j;
     for (j = 0; j < 3; j++) {
         mpq_init(cq[j]);
         mpq_set_d(cq[j], C[j]);
     }
-    mpq_inits(A, B, aa, bb, ab, r2, al, be, ga, de, t, NULL);
+    mpq_inits(A, B, aa, bb, ab, al, be, ga, de, t, NULL);
     mpfr_inits2(PREC, sd, su, (mpfr_ptr)0);
-    ball_w(B, bb, r2);
+    ball_w(B, bb);
     xu_aff_q(A, P[i], (mpq_t const *)cq);
-    xu_dot3_q(aa, P[i], P[i]);
-    xu_dot3_q(ab, P[i], P[3]);
+    quad_q(aa, P[i], P[i]);
+    quad_q(ab, P[i], P[3]);
     mpq_mul(al, B, B);
-    mpq_mul(t, r2, bb);
-    mpq_sub(al, al, t);        /* alpha = B^2 - r^2 |b|^2 > 0 */
+    mpq_sub(al, al, bb);       /* alpha = B^2 - b^T Q b > 0 (the ball: Q = r^2 I) */
     mpq_mul(be, A, B);
-    mpq_mul(t, r2, ab);
-    mpq_sub(be, be, t);        /* beta = A B - r^2 a.b */
+    mpq_sub(be, be, ab);       /* beta = A B - a^T Q b */
     mpq_mul(ga, A, A);
-    mpq_mul(t, r2, aa);
-    mpq_sub(ga, ga, t);        /* gamma = A^2 - r^2 |a|^2 */
+    mpq_sub(ga, ga, aa);       /* gamma = A^2 - a^T Q a */
     mpq_mul(de, be, be);
     mpq_mul(t, al, ga);
     mpq_sub(de, de, t);        /* beta^2 - alpha gamma >= 0 */
@@ -169,7 +227,7 @@ static void exact_ends(int i, mpfr_t l0, mpfr_t l1, mpfr_t h0, mpfr_t h1)
     root_end(l1, be, sd, -1, al, MPFR_RNDU);
     for (j = 0; j < 3; j++)
         mpq_clear(cq[j]);
-    mpq_clears(A, B, aa, bb, ab, r2, al, be, ga, de, t, NULL);
+    mpq_clears(A, B, aa, bb, ab, al, be, ga, de, t, NULL);
     mpfr_clears(sd, su, (mpfr_ptr)0);
 }
 
@@ -210,7 +268,29 @@ static void point_check(const cbx_box *o, double u, double v, double s)
     for (j = 0; j < 3; j++)
         mpq_init(x[j]);
     mpq_inits(t, X, W, NULL);
-    xu_ball_point(x, C, R, u, v, s);
+    if (!ELL) {
+        xu_ball_point(x, C, R, u, v, s);
+    } else {                   /* c + M q, q the unit ball's point */
+        static const double zero[3] = {0, 0, 0};
+        mpq_t q[3], e;
+        for (j = 0; j < 3; j++)
+            mpq_init(q[j]);
+        mpq_init(e);
+        xu_ball_point(q, zero, 1.0, u, v, s);
+        for (i = 0; i < 3; i++) {
+            mpq_set_d(x[i], C[i]);
+            for (j = 0; j < 3; j++) {
+                mpq_set_d(e, ROT[i][j]);
+                mpq_mul(e, e, q[j]);
+                mpq_set_d(t, RAD[j]);
+                mpq_mul(e, e, t);
+                mpq_add(x[i], x[i], e);
+            }
+        }
+        for (j = 0; j < 3; j++)
+            mpq_clear(q[j]);
+        mpq_clear(e);
+    }
     xu_aff_q(W, P[3], (mpq_t const *)x);
     check(mpq_sgn(W) > 0, "W > 0 at a point of the ball");
     for (i = 0; i < 3; i++) {
@@ -244,6 +324,25 @@ void pso_closed_form(const double p[4][4], const double c[3], double rad, int i,
     *hi = (be + sq) / al;
 }
 
+/* the same on the rows in the ellipsoid's frame (M^T a, M^T b, rounded
+ * to nearest), radius 1 */
+void pso_closed_form_ell(const double p[4][4], const double c[3], const double radii[3],
+                         const double rot[3][3], int i, double *lo, double *hi)
+{
+    double q[4][4];
+    const double z[3] = {0, 0, 0};
+    int j, k;
+    memset(q, 0, sizeof q);
+    for (k = 0; k < 2; k++) {
+        const double *a = p[k == 0 ? i : 3];
+        double *t = q[k == 0 ? i : 3];
+        for (j = 0; j < 3; j++)
+            t[j] = radii[j] * (rot[0][j] * a[0] + rot[1][j] * a[1] + rot[2][j] * a[2]);
+        t[3] = a[0] * c[0] + a[1] * c[1] + a[2] * c[2] + a[3];
+    }
+    pso_closed_form((const double (*)[4])q, z, 1.0, i, lo, hi);
+}
+
 /* ---- one case ---------------------------------------------------------------- */
 static int in_dom(void)
 {
@@ -255,6 +354,13 @@ static int in_dom(void)
     for (j = 0; j < 3; j++)
         if (!(fabs(C[j]) <= 0x1p60))
             return 0;
+    if (ELL) {
+        for (j = 0; j < 3; j++)
+            if (!(fabs(RAD[j]) <= 0x1p30 && fabs(ROT[j][0]) <= 0x1p30 && fabs(ROT[j][1]) <= 0x1p30
+                  && fabs(ROT[j][2]) <= 0x1p30))
+                return 0;
+        return 1;
+    }
     return fabs(R) <= 0x1p60;
 }
 
@@ -265,20 +371,22 @@ static int any_nan(void)
         for (j = 0; j < 4; j++)
             if (isnan(P[i][j]))
                 return 1;
+    if (ELL) {
+        for (j = 0; j < 3; j++)
+            if (isnan(RAD[j]) || isnan(ROT[j][0]) || isnan(ROT[j][1]) || isnan(ROT[j][2]))
+                return 1;
+    }
     return isnan(C[0]) || isnan(C[1]) || isnan(C[2]) || isnan(R);
 }
 
-void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st, const cbx_box *out,
-               pso_stats *s, void (*fail)(const char *what))
+/* the case set up in P, C and R or RAD and ROT */
+static void judge(cbx_status st, const cbx_box *out, pso_stats *s, void (*fail)(const char *what))
 {
     cbx_box o = *out;
     int i;
-    mpq_t B, bb, r2;
+    mpq_t B, bb;
     xu_rng gs;
     xu_rng *g = &gs;
-    memcpy(P, p, sizeof P);
-    memcpy(C, c, sizeof C);
-    R = r;
     S = s;
     FAIL = fail;
     gs.s = s->rng;
@@ -295,21 +403,21 @@ void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st,
         check(st == CBX_ERANGE, "outside the domain -> CBX_ERANGE");
         return;
     }
-    mpq_inits(B, bb, r2, NULL);
-    ball_w(B, bb, r2);
-    if (front_sign(B, r2, bb) <= 0)
+    mpq_inits(B, bb, NULL);
+    ball_w(B, bb);
+    if (front_sign(B, bb) <= 0)
         check(st == CBX_EBEHIND, "a ball touching, crossing or behind the camera plane -> CBX_EBEHIND");
     if (st == CBX_EBEHIND)
-        check(near_plane(B, r2, bb), "CBX_EBEHIND only for a ball near the camera plane: W(c) - |r| |b| <= 2^-40 (S_W + |r| |b|) + 2^-1000 + |r| 2^-520");
+        check(near_plane(B, bb), "CBX_EBEHIND only for a ball near the camera plane: W(c) - |r| |b| <= 2^-40 (S_W + |r| |b|) + 2^-1000 + |r| 2^-520");
     if (st == CBX_ERANGE) { /* in the domain: how far from the camera plane (shown) */
-        double b = mpq_get_d(B), m = sqrt(mpq_get_d(r2) * mpq_get_d(bb)), f = (b - m) / (b + m);
+        double b = mpq_get_d(B), m = sqrt(mpq_get_d(bb)), f = (b - m) / (b + m);
         s->erange++;
         if (f > s->erange_front)
             s->erange_front = f;
     }
     if (st == CBX_OK) {
-        check(front_sign(B, r2, bb) > 0, "CBX_OK: the ball in front of the camera");
-        if (front_sign(B, r2, bb) > 0) {
+        check(front_sign(B, bb) > 0, "CBX_OK: the ball in front of the camera");
+        if (front_sign(B, bb) > 0) {
             mpfr_t l0, l1, h0, h1;
             mpfr_inits2(PREC, l0, l1, h0, h1, (mpfr_ptr)0);
             for (i = 0; i < 3; i++) {
@@ -323,7 +431,10 @@ void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st,
                 xu_dists_add(&S->dist, u);
                 u = units(o.hi[i], h0);
                 xu_dists_add(&S->dist, u);
-                pso_closed_form((const double (*)[4])P, C, R, i, &nl, &nh);
+                if (ELL)
+                    pso_closed_form_ell((const double (*)[4])P, C, RAD, (const double (*)[3])ROT, i, &nl, &nh);
+                else
+                    pso_closed_form((const double (*)[4])P, C, R, i, &nl, &nh);
                 s->naive++;
                 if (!(mpfr_cmp_d(l1, nl) >= 0 && mpfr_cmp_d(h0, nh) <= 0))
                     s->naive_miss++;
@@ -340,21 +451,44 @@ void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st,
             }
         }
     }
-    mpq_clears(B, bb, r2, NULL);
+    mpq_clears(B, bb, NULL);
     s->rng = gs.s;
+}
+
+void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st, const cbx_box *out,
+               pso_stats *s, void (*fail)(const char *what))
+{
+    memcpy(P, p, sizeof P);
+    memcpy(C, c, sizeof C);
+    R = r;
+    ELL = 0;
+    judge(st, out, s, fail);
+}
+
+void pso_judge_ell(const double p[4][4], const double c[3], const double radii[3], const double rot[3][3],
+                   cbx_status st, const cbx_box *out, pso_stats *s, void (*fail)(const char *what))
+{
+    memcpy(P, p, sizeof P);
+    memcpy(C, c, sizeof C);
+    memcpy(RAD, radii, sizeof RAD);
+    memcpy(ROT, rot, sizeof ROT);
+    R = 0;
+    ELL = 1;
+    judge(st, out, s, fail);
 }
 
 int pso_contains(const double p[4][4], const double c[3], double r, int i, double lo, double hi)
 {
     mpfr_t l0, l1, h0, h1;
-    mpq_t B, bb, r2;
+    mpq_t B, bb;
     int ok = 0;
     memcpy(P, p, sizeof P);
     memcpy(C, c, sizeof C);
     R = r;
-    mpq_inits(B, bb, r2, NULL);
-    ball_w(B, bb, r2);
-    if (front_sign(B, r2, bb) > 0) {
+    ELL = 0;
+    mpq_inits(B, bb, NULL);
+    ball_w(B, bb);
+    if (front_sign(B, bb) > 0) {
         mpfr_inits2(PREC, l0, l1, h0, h1, (mpfr_ptr)0);
         exact_ends(i, l0, l1, h0, h1);
         ok = mpfr_cmp_d(l1, lo) >= 0 && mpfr_cmp_d(h0, hi) <= 0 ? 1 : 0;
@@ -362,7 +496,7 @@ int pso_contains(const double p[4][4], const double c[3], double r, int i, doubl
             ok = -1; /* within the enclosure's 2^-300: undecided */
         mpfr_clears(l0, l1, h0, h1, (mpfr_ptr)0);
     }
-    mpq_clears(B, bb, r2, NULL);
+    mpq_clears(B, bb, NULL);
     return ok;
 }
 

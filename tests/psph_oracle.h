@@ -40,11 +40,21 @@ typedef struct pso_stats {
 void pso_init(pso_stats *s, uint64_t seed);
 void pso_judge(const double p[4][4], const double c[3], double r, cbx_status st, const cbx_box *out,
                pso_stats *s, void (*fail)(const char *what));
+/* the same for an ellipsoid c + rot diag(radii) q, |q| <= 1
+ * (cbx_project_ellipsoid: the ball's clauses with |M^T b| in place of
+ * |r| |b|, and 1 + sum_j |radii_j| (1 + sum_i |rot_ij|) in place of |r|
+ * in the allowance of CBX_EBEHIND: the square root of the norm's absolute
+ * rounding is not scaled by the radii) */
+void pso_judge_ell(const double p[4][4], const double c[3], const double radii[3], const double rot[3][3],
+                   cbx_status st, const cbx_box *out, pso_stats *s, void (*fail)(const char *what));
 void pso_print(FILE *f, pso_stats *s);
 /* 1 when [lo, hi] contains the exact range of X_i / W over the ball (in
  * front of the camera), 0 when not, -1 when within 2^-300 of an end */
 /* the closed form in round to nearest (Mara and McGuire; unsound) */
 void pso_closed_form(const double p[4][4], const double c[3], double r, int i, double *lo, double *hi);
+/* the same for an ellipsoid, on the rows M^T a, M^T b rounded to nearest */
+void pso_closed_form_ell(const double p[4][4], const double c[3], const double radii[3],
+                         const double rot[3][3], int i, double *lo, double *hi);
 int pso_contains(const double p[4][4], const double c[3], double r, int i, double lo, double hi);   /* the summary lines (sorts s->dist.v) */
 void pso_free(pso_stats *s);
 

@@ -91,11 +91,11 @@ static inline cbx_iv ps_k(double t, double a, double b)
     return q;
 }
 
-/* x + y enclosed, both in [-m, m] (1 <= m <= 2^400): the sum in
+/* x + y enclosed, both in [-m, m] (1 <= m <= 2^1000): the sum in
  * [-3 m, 3 m]. */
 /*@ requires fin: \is_finite(x.lo) && \is_finite(x.hi) && \is_finite(y.lo) && \is_finite(y.hi)
                   && \is_finite(m);
-    requires rng: 1 <= m <= 0x1p400 && iv_rng(x.lo, x.hi, m) && iv_rng(y.lo, y.hi, m);
+    requires rng: 1 <= m <= 0x1p1000 && iv_rng(x.lo, x.hi, m) && iv_rng(y.lo, y.hi, m);
     assigns \nothing;
     ensures fin: \is_finite(\result.lo) && \is_finite(\result.hi);
     ensures rng: iv_rng(\result.lo, \result.hi, 3*m);
@@ -300,5 +300,9 @@ static inline int ps_span(double x, double y, double v)
 /* ---- the three output axes ------------------------------------------------- */
 /* One output axis: its ends, ok 0 when it could not be certified. */
 typedef struct ps_ax { double lo, hi; int ok; } ps_ax;
+
+/* One certified end v, its witness of tightness w (the searches of
+ * src/f64/cbx_psph.c and cbx_pell.c); ok 0 when none was found. */
+typedef struct ps_fin { double v, w; int ok; } ps_fin;
 
 #endif /* CBX_PAFF_H */

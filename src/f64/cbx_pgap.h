@@ -133,23 +133,22 @@ static inline ps_gap ps_gap_at(double t, double a0, double a1, double a2, double
  * den is not well above 0 or an end is beyond 2^99). */
 typedef struct ps_qd { double h, sq, den; } ps_qd;
 
-/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
-    requires ctr: ps_ctr(c0, c1, c2, r);
-    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
-                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
-                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+/* The three coefficients from A = X(c), B = W(c), the linear parts a, b
+ * and r2 = r^2 (the ellipsoid's candidate, src/f64/cbx_pell.c, passes its
+ * rows in its own frame and r2 = 1). */
+/*@ requires fin: \is_finite(A) && \is_finite(B) && \is_finite(a0) && \is_finite(a1) && \is_finite(a2)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(r2);
+    requires rng: -PS_L <= A <= PS_L && -PS_L <= B <= PS_L && -PS_L <= r2 <= PS_L
+                  && -PS_L <= a0 <= PS_L && -PS_L <= a1 <= PS_L && -PS_L <= a2 <= PS_L
+                  && -PS_L <= b0 <= PS_L && -PS_L <= b1 <= PS_L && -PS_L <= b2 <= PS_L;
     assigns \nothing;
     ensures fin: \is_finite(\result.h) && \is_finite(\result.sq) && \is_finite(\result.den);
     ensures rng: -PS_L <= \result.h <= PS_L && 0 <= \result.sq <= PS_L && -PS_L <= \result.den <= PS_L;
 */
-static inline ps_qd ps_quad(double a0, double a1, double a2, double a3,
-                            double b0, double b1, double b2, double b3,
-                            double c0, double c1, double c2, double r)
+static inline ps_qd ps_coef(double A, double B, double a0, double a1, double a2,
+                            double b0, double b1, double b2, double r2)
 {
     ps_qd q;
-    double A = ps_add(ps_dot(a0, a1, a2, c0, c1, c2), a3);
-    double B = ps_add(ps_dot(b0, b1, b2, c0, c1, c2), b3);
-    double r2 = ps_mul(r, r);
     double nb = ps_dot(b0, b1, b2, b0, b1, b2);
     double ab = ps_dot(a0, a1, a2, b0, b1, b2);
     double v0 = ps_sub(ps_mul(A, b0), ps_mul(B, a0));
@@ -173,23 +172,38 @@ static inline ps_qd ps_quad(double a0, double a1, double a2, double a3,
     return q;
 }
 
-typedef struct ps_cand { double lo, hi; int ok; } ps_cand;
-
 /*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
     requires ctr: ps_ctr(c0, c1, c2, r);
     requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
                   && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
                   && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
     assigns \nothing;
+    ensures fin: \is_finite(\result.h) && \is_finite(\result.sq) && \is_finite(\result.den);
+    ensures rng: -PS_L <= \result.h <= PS_L && 0 <= \result.sq <= PS_L && -PS_L <= \result.den <= PS_L;
+*/
+static inline ps_qd ps_quad(double a0, double a1, double a2, double a3,
+                            double b0, double b1, double b2, double b3,
+                            double c0, double c1, double c2, double r)
+{
+    double A = ps_add(ps_dot(a0, a1, a2, c0, c1, c2), a3);
+    double B = ps_add(ps_dot(b0, b1, b2, c0, c1, c2), b3);
+    double r2 = ps_mul(r, r);
+    return ps_coef(A, B, a0, a1, a2, b0, b1, b2, r2);
+}
+
+typedef struct ps_cand { double lo, hi; int ok; } ps_cand;
+
+/* The ends (h -+ sq) / den where den is well above 0 (ok 0 otherwise, or
+ * when an end is beyond 2^99). */
+/*@ requires fin: \is_finite(e.h) && \is_finite(e.sq) && \is_finite(e.den);
+    requires rng: -PS_L <= e.h <= PS_L && 0 <= e.sq <= PS_L && -PS_L <= e.den <= PS_L;
+    assigns \nothing;
     ensures ok: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
                 && -PS_C <= \result.lo <= PS_C && -PS_C <= \result.hi <= PS_C;
 */
-static inline ps_cand ps_candidate(double a0, double a1, double a2, double a3,
-                                   double b0, double b1, double b2, double b3,
-                                   double c0, double c1, double c2, double r)
+static inline ps_cand ps_roots(ps_qd e)
 {
     ps_cand q;
-    ps_qd e = ps_quad(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     q.lo = 0.0;
     q.hi = 0.0;
     q.ok = 0;
@@ -205,6 +219,22 @@ static inline ps_cand ps_candidate(double a0, double a1, double a2, double a3,
         }
     }
     return q;
+}
+
+/*@ requires rows: ps_row(a0, a1, a2, a3) && ps_row(b0, b1, b2, b3);
+    requires ctr: ps_ctr(c0, c1, c2, r);
+    requires fin: \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(a3)
+                  && \is_finite(b0) && \is_finite(b1) && \is_finite(b2) && \is_finite(b3)
+                  && \is_finite(c0) && \is_finite(c1) && \is_finite(c2) && \is_finite(r);
+    assigns \nothing;
+    ensures ok: \result.ok != 0 ==> \is_finite(\result.lo) && \is_finite(\result.hi)
+                && -PS_C <= \result.lo <= PS_C && -PS_C <= \result.hi <= PS_C;
+*/
+static inline ps_cand ps_candidate(double a0, double a1, double a2, double a3,
+                                   double b0, double b1, double b2, double b3,
+                                   double c0, double c1, double c2, double r)
+{
+    return ps_roots(ps_quad(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r));
 }
 
 #endif /* CBX_PGAP_H */

@@ -73,8 +73,6 @@ static int ps_dom_in(const cbx_proj *p, const double c[3], double r)
 }
 
 /* ---- the search --------------------------------------------------------- */
-typedef struct ps_fin { double v, w; int ok; } ps_fin;
-
 /* One try of an end, at th = t0 + d and tl = t0 - d: the enclosure of
  * e(t) + |r| |k(t)| (up != 0: the upper end) or e(t) - |r| |k(t)| (up ==
  * 0: the lower end) at the end, then at the other point.  1 when the end (th for up, tl for down) is

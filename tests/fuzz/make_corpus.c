@@ -420,6 +420,34 @@ static void psphere(void)
     seed(H, "zero-w", 0x00, 20, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1);
 }
 
+/* fuzz_pell: control bit 0 W clear, 1 an ellipsoid in front of a camera
+ * looking down -z, 2 rot the identity; then the 16 map entries, c0, c1,
+ * c2, the radii and rot's 9 entries (tests/fuzz/fuzz_pell.c). */
+#define ROT_TILT 0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1
+static void pell(void)
+{
+    const char *H = "pell";
+    seed(H, "camera-front", 0x00, 31, CAM90, 0.2, -0.1, -5, 1, 0.5, 0.25, ROT_TILT);
+    seed(H, "camera-front-forced", 0x02, 31, CAM90, 0.2, -0.1, 5, 1, 2, 0.5, ROT_TILT);
+    seed(H, "camera-crossing", 0x04, 31, CAM90, 0, 0, -1, 0.5, 0.5, 2, ROT_ID);
+    seed(H, "camera-tangent", 0x04, 31, CAM90, 0, 0, -2, 0.5, 0.5, 2, ROT_ID);
+    seed(H, "camera-behind", 0x00, 31, CAM90, 0, 0, 3, 1, 1, 1, ROT_TILT);
+    seed(H, "camera-far-tiny", 0x00, 31, 1e6, 0, 0, 0, 0, 1e6, 0, 0, 0, 0, -1, -0.2, 0, 0, -1, 0,
+         1e-3, -1e-3, -1e5, 1e-4, 1e-6, 1e-5, ROT_TILT);
+    seed(H, "affine-w-const", 0x01, 31, 0.6, -0.8, 0, 5, 0.8, 0.6, 0, -5, 0, 0, 1, 0, 0, 0, 0, 3,
+         1, 2, 3, 0.5, 0.25, 4, ROT_TILT);
+    seed(H, "disk", 0x00, 31, CAM90, 0.3, 0.3, -4, 1, 1, 0, ROT_TILT);
+    seed(H, "point", 0x00, 31, CAM90, 0.3, 0.3, -2, 0, 0, 0, ROT_ID);
+    seed(H, "needle", 0x00, 31, CAM90, 0.1, 0.1, -5, 0.01, 0.01, 4.9, ROT_ID);
+    seed(H, "singular-rot", 0x00, 31, CAM90, 0.3, 0.3, -4, 1, 2, 3, 1, 1, 1, 1, 1, 1, 1, 1, 1);
+    seed(H, "negative-radii", 0x00, 31, CAM90, 0.3, 0.3, -4, -0.5, 1, -2, ROT_TILT);
+    seed(H, "edges", 0x01, 31, 0x1p60, -0x1p60, 0x1p60, 0x1p120, 1, 1, 1, -0x1p120, 0, 0, 1, 0,
+         0, 0, 0, 0x1p120, 0x1p60, -0x1p60, 1, 0x1p30, -0x1p30, 1, 0x1p30, 0, 0, 0, 1, 0, 0, 0, -0x1p30);
+    seed(H, "nan-rot", 0x00, 31, CAM90, 0, 0, -5, 1, 1, 1, 1, 0, 0, 0, NaN, 0, 0, 0, 1);
+    seed(H, "inf-radius", 0x00, 31, CAM90, 0, INF, -5, 1, INF, 1, ROT_ID);
+    seed(H, "zero-w", 0x00, 31, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, ROT_ID);
+}
+
 static void pnear(void)
 {
     const char *H = "pnear";
@@ -547,6 +575,7 @@ int main(int argc, char **argv)
     plane();
     project();
     psphere();
+    pell();
     pnear();
     pball();
     pwide();
