@@ -199,7 +199,7 @@
 
 #define MAXR 101    /* timed rounds                   */
 #define MAXROWS 96  /* rows, hidden ones included     */
-#define MAXG 16     /* rows per timing group          */
+#define MAXG 20     /* rows per timing group          */
 #define SPH_PREC 320
 
 /* ---- defeating dead-code elimination --------------------------------- */
@@ -263,6 +263,9 @@ typedef struct bench_ctx {
     double *pwn;              /* the near plane (the camera's near distance) */
     double *pxc, *pxr;        /* balls across the near plane: centres, radii */
     double *pes;              /* ellipsoids at the balls' centres: radii    */
+    cbx_projf *pmf;           /* the same cameras, balls and boxes in float */
+    cbx_boxf *pinf;           /* (each value rounded to nearest): the       */
+    float *pscf, *psrf, *pwnf; /* binary32 twins' rows                      */
     double (*per)[3][3];      /* and rotations                              */
     /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
      * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
@@ -462,6 +465,9 @@ REF_KERNEL(k_pnear_ref, cbx_box, ref_pnear(&b->pm[i], &b->pcx[i], b->pwn[i], &o[
 REF_KERNEL(k_pell_ref, cbx_box, ref_pell(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
 REF_KERNEL(k_pell_obb, cbx_box, ref_pell_obb8(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
 CBX_KERNEL(k_pell, cbx_box, cbx_project_ellipsoid(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
+CBX_KERNEL(k_psphf, cbx_boxf, cbx_project_spheref(&b->pmf[i], b->pscf + 3 * i, b->psrf[i], &o[i]))
+CBX_KERNEL(k_pnearf, cbx_boxf, cbx_project_box_nearf(&b->pmf[i], &b->pinf[i], b->pwnf[i], &o[i]))
+CBX_KERNEL(k_pballf, cbx_boxf, cbx_project_sphere_nearf(&b->pmf[i], b->pscf + 3 * i, b->psrf[i], b->pwnf[i], &o[i]))
 CBX_KERNEL(k_pnear_front, cbx_box, cbx_project_box_near(&b->pm[i], &b->pin[i], b->pwn[i], &o[i]))
 CBX_KERNEL(k_pnear, cbx_box, cbx_project_box_near(&b->pm[i], &b->pcx[i], b->pwn[i], &o[i]))
 CBX_KERNEL(k_pball_front, cbx_box, cbx_project_sphere_near(&b->pm[i], b->psc + 3 * i, b->psr[i], b->pwn[i], &o[i]))
@@ -1185,6 +1191,12 @@ static void define_rows(bench_ctx *b, const sizes *z)
             n, P, 0, bsz, MK_NONE);
     add_row(G_P, 0, "PB", "ball in front, clipped at the near plane: certbox `cbx_project_sphere_near`",
             k_pball_front, n, P, 0, bsz, MK_NONE);
+    add_row(G_P, 0, "PSf", "projected ball, binary32: certbox `cbx_project_spheref` (the binary64 bound, rounded out)",
+            k_psphf, n, P, 0, fsz, MK_NONE);
+    add_row(G_P, 0, "PNf", "box in front, clipped, binary32: certbox `cbx_project_box_nearf`", k_pnearf,
+            n, P, 0, fsz, MK_NONE);
+    add_row(G_P, 0, "PBf", "ball in front, clipped, binary32: certbox `cbx_project_sphere_nearf`", k_pballf,
+            n, P, 0, fsz, MK_NONE);
     unsound(add_row(G_P, 0, "PB-XR", "ball across the near plane: its cube's clipped vertices divided by w, RN (looser)",
                     k_pball_ref, n, P, 0, bsz, MK_NONE));
     add_row(G_P, 0, "PB-X", "ball across the near plane: certbox `cbx_project_sphere_near`", k_pball,
@@ -1596,6 +1608,11 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     b->pxr = xmalloc(n * sizeof *b->pxr);
     b->pes = xmalloc(3 * n * sizeof *b->pes);
     b->per = xmalloc(n * sizeof *b->per);
+    b->pmf = xmalloc(n * sizeof *b->pmf);
+    b->pinf = xmalloc(n * sizeof *b->pinf);
+    b->pscf = xmalloc(3 * n * sizeof *b->pscf);
+    b->psrf = xmalloc(n * sizeof *b->psrf);
+    b->pwnf = xmalloc(n * sizeof *b->pwnf);
     rng.s = seed + 7;
     for (k = 0; k < n; k++) {
         double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
@@ -1657,6 +1674,20 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
         b->pes[3 * k] = b->psr[k];
         b->pes[3 * k + 1] = b->psr[k] * urand(&rng, 0.25, 1);
         b->pes[3 * k + 2] = b->psr[k] * urand(&rng, 0.0625, 1);
+    }
+    /* the binary32 twins' inputs: each value rounded to nearest float */
+    for (k = 0; k < n; k++) {
+        int i, j;
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++)
+                b->pmf[k].m[i][j] = (float)b->pm[k].m[i][j];
+        for (i = 0; i < 3; i++) {
+            b->pinf[k].lo[i] = (float)b->pin[k].lo[i];
+            b->pinf[k].hi[i] = (float)b->pin[k].hi[i];
+            b->pscf[3 * k + i] = (float)b->psc[3 * k + i];
+        }
+        b->psrf[k] = (float)b->psr[k];
+        b->pwnf[k] = (float)b->pwn[k];
     }
     gen_rot(b, n, seed);
 }

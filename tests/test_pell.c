@@ -221,6 +221,16 @@ static void own_hard(void)
     RAD[1] = 1;
     ROT[2][2] = NAN;
     run_case("NaN in rot");
+    /* each entry of rot and each radius just outside the domain alone */
+    for (k = 0; k < 12; k++) {
+        set_identity();
+        RAD[0] = RAD[1] = RAD[2] = 1;
+        if (k < 9)
+            ROT[k / 3][k % 3] = (k % 2 ? -1 : 1) * 0x1.0000000000001p30;
+        else
+            RAD[k - 9] = (k % 2 ? -1 : 1) * 0x1.0000000000001p30;
+        run_case("one shape entry out of the domain");
+    }
     /* a needle pointing at the camera, its tip at the camera plane and
      * just in front of it (W = -z here) */
     C[0] = 0.1; C[1] = 0.1; C[2] = -5;
