@@ -1,6 +1,7 @@
 /* Cameras and cases for the projective tests (tests/proj_cases.h). */
 #include <math.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "proj_cases.h"
@@ -451,4 +452,12 @@ void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap
         *wn = ldexp(0.01, 12 * k - 40);
         run("scaled wide or narrow camera", CBX_OK, NULL);
     }
+}
+
+void tc_fail_map(const char *what, const char *name, const double P[4][4])
+{
+    int i;
+    printf("FAIL %s (%s)\n  map:", what, name);
+    for (i = 0; i < 4; i++)
+        printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
 }

@@ -76,4 +76,8 @@ void tc_sphere_hard(double P[4][4], double c[3], double *r, tc_run run);
  * a ball nearly tangent to the near plane, its radius 0.125 + gap */
 void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap, tc_run run);
 
+/* The first lines of a failure report: "FAIL what (name)" and the map's
+ * rows in hexadecimal (the projective tests' on_fail print the rest). */
+void tc_fail_map(const char *what, const char *name, const double P[4][4]);
+
 #endif /* PROJ_CASES_H */

@@ -46,12 +46,9 @@ static long random_cases, random_erange, wide_cases, wide_erange, same_as_unclip
 
 static void on_fail(const char *what)
 {
-    int i;
     if (S.failed > 20)
         return;
-    printf("FAIL %s (%s)\n  map:", what, case_name);
-    for (i = 0; i < 4; i++)
-        printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
+    tc_fail_map(what, case_name, (const double (*)[4])P);
     printf("\n  c: %a %a %a  r: %a  wn: %a\n", C[0], C[1], C[2], R, WN);
 }
 

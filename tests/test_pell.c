@@ -56,9 +56,7 @@ static void on_fail(const char *what)
     int i;
     if (S.failed > 20)
         return;
-    printf("FAIL %s (%s)\n  map:", what, case_name);
-    for (i = 0; i < 4; i++)
-        printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
+    tc_fail_map(what, case_name, (const double (*)[4])P);
     printf("\n  c: %a %a %a  radii: %a %a %a\n  rot:", C[0], C[1], C[2], RAD[0], RAD[1], RAD[2]);
     for (i = 0; i < 3; i++)
         printf(" [%a %a %a]", ROT[i][0], ROT[i][1], ROT[i][2]);

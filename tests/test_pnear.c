@@ -82,12 +82,9 @@ static void random_run(const char *name)
 
 static void on_fail(const char *what)
 {
-    int i;
     if (S.failed > 20)
         return;
-    printf("FAIL %s (%s)\n  map:", what, case_name);
-    for (i = 0; i < 4; i++)
-        printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
+    tc_fail_map(what, case_name, (const double (*)[4])P);
     printf("\n  box: [%a %a] [%a %a] [%a %a]  wn: %a\n", B.lo[0], B.hi[0], B.lo[1], B.hi[1], B.lo[2], B.hi[2], WN);
 }
 
