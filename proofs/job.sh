@@ -67,7 +67,7 @@ set -eu
 name=$1
 root=$(pwd)
 out=build/proof
-FC="frama-c $(for d in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$root" "${d#-I}"; done)"
+FC="frama-c $(sh proofs/idle.sh) $(for d in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$root" "${d#-I}"; done)"
 PAR=${CBX_WP_PAR:-2}
 # each family's jobs use its own prover entries (proofs/setup.sh: the same
 # provers, with the axioms that family never needs left out)

@@ -27,6 +27,7 @@ rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256 $out/report.md
 inputs=$(sh proofs/inputs.sh)
 conf=$(sh proofs/setup.sh $out)
 export WHY3CONFIG="$conf"
+sh proofs/idle.sh > /dev/null   # checked once, before the jobs (proofs/idle.sh)
 NPROC=$(nproc 2>/dev/null || echo 2)
 # One job more than there are cores, each with one prover process per core:
 # WP's task loop sleeps 50 ms between its rounds (Frama-C's Task.on_idle)

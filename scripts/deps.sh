@@ -5,7 +5,7 @@
 #   test      + GMP, MPFR, g++, pkg-config, python3, cmake (install-check's
 #               CMake consumer), jansson (the tool's glTF input) and
 #               assimp-testmodels (glTF files for test_gltf)
-#   proof     + frama-c-base, why3, cvc4, z3
+#   proof     + frama-c-base, why3, cvc4, z3, ocaml-findlib
 #   fuzz      + clang and its libFuzzer/sanitizer runtimes
 #   bench     + gnuplot-nox (make bench draws its plot)
 #   embedded  + arm-none-eabi-gcc (make embedded: Cortex-M4F/M7, freestanding)
@@ -49,6 +49,10 @@ if is proof; then
   have why3 || need="$need why3"
   have cvc4 || need="$need cvc4"
   have z3 || need="$need z3"
+  # ocamlfind compiles proofs/idle.ml, Frama-C's task loop without its
+  # naps (proofs/idle.sh), with the OCaml compiler
+  have ocamlfind || need="$need ocaml-findlib libfindlib-ocaml-dev"
+  have ocamlopt || need="$need ocaml"
 fi
 if is embedded; then
   have arm-none-eabi-gcc || need="$need gcc-arm-none-eabi"
