@@ -171,8 +171,8 @@ typedef enum cbx_class {
 #include "cbx_psph.h"
 #include "cbx_pnear.h"
 #include "cbx_pball.h"
-#include "cbx_pwide.h"
 #include "cbx_pell.h"
+#include "cbx_pwide.h"
 #endif
 
 
@@ -664,7 +664,8 @@ cbx_status cbx_project_sphere_near(const cbx_proj *p, const double c[3], double 
  *   2^-20 (an ellipsoid very near the camera plane for its distance from
  *   the origin, as for cbx_project_sphere)
  *                                       -> CBX_ERANGE, *out the whole space
- * Binary64.  *out may not overlap the inputs. */
+ * Binary64 (binary32 twin: cbx_project_ellipsoidf, below).  *out may not
+ * overlap the inputs. */
 /*@ requires valid: \valid_read(p) && \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
                     && \valid_read(rot + (0 .. 2)) && \valid(out);
     requires sep: \separated(out, p) && \separated(out, center + (0 .. 2))
@@ -718,9 +719,10 @@ cbx_status cbx_project_ellipsoid(const cbx_proj *p, const double center[3], cons
 #endif /* binary64 only */
 
 /* ---- binary32 twins of the binary64-only projective bounds ------------
- * cbx_project_spheref, cbx_project_box_nearf, cbx_project_sphere_nearf:
- * the bounds of cbx_project_sphere, cbx_project_box_near and
- * cbx_project_sphere_near for float inputs, with the same statuses, special
+ * cbx_project_spheref, cbx_project_box_nearf, cbx_project_sphere_nearf,
+ * cbx_project_ellipsoidf: the bounds of cbx_project_sphere,
+ * cbx_project_box_near, cbx_project_sphere_near and cbx_project_ellipsoid
+ * for float inputs, with the same statuses, special
  * cases and domain (read on the float values).  Each widens its inputs to
  * double (exact), calls the binary64 function and rounds each end outward
  * to float: at most 2^-22 |end| + 2^-147 further out (one or two units in
@@ -841,6 +843,60 @@ cbx_status cbx_project_box_nearf(const cbx_projf *p, const cbx_boxf *in, float w
     disjoint behaviors;
 */
 cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float r, float wn, cbx_boxf *out);
+
+/* cbx_project_ellipsoidf: cbx_project_ellipsoid for float inputs (above;
+ * binary64 section): the same statuses and domain on the float values,
+ * each end of the binary64 bound rounded outward to float; tightness
+ * within 2^-19 (1 + |end|) (pef_tight). */
+/*@ requires valid: \valid_read(p) && \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, p) && \separated(out, center + (0 .. 2))
+                  && \separated(out, radii + (0 .. 2)) && \separated(out, rot + (0 .. 2));
+    assigns *out;
+    behavior nan_input:
+      assumes pef_nan(p, center, radii, rot);
+      ensures \result == CBX_EINVAL && whole_space_f(out);
+    behavior ellipsoid_input:
+      assumes !pef_nan(p, center, radii, rot);
+      ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
+      ensures whole: \result != CBX_OK ==> whole_space_f(out);
+      ensures dom: \result != CBX_ERANGE ==> \old(pef_dom(p, center, radii, rot));
+      ensures behind: \old(pef_dom(p, center, radii, rot))
+        && !pe_front(\old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+                     \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+                     \old(radii[0]), \old(radii[1]), \old(radii[2])) ==> \result == CBX_EBEHIND;
+      ensures ok0: \result == CBX_OK ==> \is_finite(out->lo[0]) && \is_finite(out->hi[0])
+        && pe_axis(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]))
+        && pef_tight(out->lo[0], out->hi[0], \old(p->m[0][0]), \old(p->m[0][1]), \old(p->m[0][2]), \old(p->m[0][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]));
+      ensures ok1: \result == CBX_OK ==> \is_finite(out->lo[1]) && \is_finite(out->hi[1])
+        && pe_axis(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]))
+        && pef_tight(out->lo[1], out->hi[1], \old(p->m[1][0]), \old(p->m[1][1]), \old(p->m[1][2]), \old(p->m[1][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]));
+      ensures ok2: \result == CBX_OK ==> \is_finite(out->lo[2]) && \is_finite(out->hi[2])
+        && pe_axis(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]))
+        && pef_tight(out->lo[2], out->hi[2], \old(p->m[2][0]), \old(p->m[2][1]), \old(p->m[2][2]), \old(p->m[2][3]),
+          \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+          \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]),
+          \old(radii[0]), \old(radii[1]), \old(radii[2]));
+    complete behaviors;
+    disjoint behaviors;
+*/
+cbx_status cbx_project_ellipsoidf(const cbx_projf *p, const float center[3], const float radii[3],
+                                  const float rot[3][3], cbx_boxf *out);
 #endif /* binary32 twins */
 
 /* ---- the build check ---------------------------------------------------

@@ -227,6 +227,12 @@ case_ pell-radius-dropped src/f64/cbx_pell.c pe_col proofs/pell.c i01,i,dr,b1,b1
 case_ pell-hi-loose src/f64/cbx_pell.c pe_axis_of proofs/pell.c cov,tight,ok assert_tight \
   "            x.hi = h.v;" \
   "            x.hi = h.v + 1.0;" - &
+# 37. the binary32 ellipsoid's third radius widened from the second (a
+#    wrong ellipsoid: the widening's equalities, which carry the binary64
+#    statements over to the float inputs, must fail)
+case_ ellf-radius-swapped src/f32/cbx_pwide.c pw_ell_wide proofs/pwide.c eq,eqr,b1,nn,s0,w0,w1,w2,n0,n1,n2,st,whole,dom,behind,ok0,ok1,ok2 'assert_eq$' \
+  "        {pw_w(f.s[0]), pw_w(f.s[1]), pw_w(f.s[2])}," \
+  "        {pw_w(f.s[0]), pw_w(f.s[1]), pw_w(f.s[1])}," - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

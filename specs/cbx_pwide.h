@@ -48,6 +48,14 @@
          && pb_above(s, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn))
       && (\exists real s; s <= lo + pw_tau(lo)
          && pb_below(s, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn));
+    predicate pef_tight(real lo, real hi, real a0, real a1, real a2, real a3, real b0, real b1, real b2, real b3,
+                        real c0, real c1, real c2,
+                        real r00, real r01, real r02, real r10, real r11, real r12,
+                        real r20, real r21, real r22, real s0, real s1, real s2) =
+      (\exists real u; hi - pw_tau(hi) <= u
+         && pe_above(u, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2))
+      && (\exists real u; u <= lo + pw_tau(lo)
+         && pe_below(u, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2));
 */
 
 #if !defined(CBX_FRAMAC_ONLY_64) /* the float structures' logic is there */
@@ -79,6 +87,19 @@
     predicate pbf_nan(cbx_projf *p, float *c, float r, float wn) = psf_nan(p, c, r) || \is_NaN(wn);
     predicate pbf_dom(cbx_projf *p, float *c, float r, float wn) =
       psf_dom(p, c, r) && \is_finite(wn) && pn_wn(wn);
+    predicate pef_nan(cbx_projf *p, float *c, float *s, float (*r)[3]) =
+      proj_nan_f(p) || \is_NaN(c[0]) || \is_NaN(c[1]) || \is_NaN(c[2])
+      || \is_NaN(s[0]) || \is_NaN(s[1]) || \is_NaN(s[2])
+      || \is_NaN(r[0][0]) || \is_NaN(r[0][1]) || \is_NaN(r[0][2]) || \is_NaN(r[1][0]) || \is_NaN(r[1][1])
+      || \is_NaN(r[1][2]) || \is_NaN(r[2][0]) || \is_NaN(r[2][1]) || \is_NaN(r[2][2]);
+    predicate pef_dom(cbx_projf *p, float *c, float *s, float (*r)[3]) =
+      pwf_fin(p) && \is_finite(c[0]) && \is_finite(c[1]) && \is_finite(c[2])
+      && \is_finite(s[0]) && \is_finite(s[1]) && \is_finite(s[2])
+      && \is_finite(r[0][0]) && \is_finite(r[0][1]) && \is_finite(r[0][2]) && \is_finite(r[1][0])
+      && \is_finite(r[1][1]) && \is_finite(r[1][2]) && \is_finite(r[2][0]) && \is_finite(r[2][1])
+      && \is_finite(r[2][2])
+      && pwf_rows(p) && ps_ctr(c[0], c[1], c[2], 0)
+      && pe_sh(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2], s[0], s[1], s[2]);
 
     // A float map (box) widened to double: the same values, all finite.
     predicate pw_wide(cbx_proj *d, cbx_projf *p) =
@@ -127,6 +148,15 @@
       && pw_mono(l, lo, aff(b0, b1, b2, b3, x0, x1, x2)) && pw_mono(hi, h, aff(b0, b1, b2, b3, x0, x1, x2))
       ==> pn_xlo(l, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2)
           && pn_xhi(h, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2);
+    lemma pe_pt_w: \forall real l, h, lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2;
+      pe_at(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2) && l <= lo && hi <= h
+      && pw_mono(l, lo, aff(b0, b1, b2, b3, x0, x1, x2)) && pw_mono(hi, h, aff(b0, b1, b2, b3, x0, x1, x2))
+      ==> pe_at(l, h, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2);
+    lemma pe_axis_w: \forall real l, h, lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
+                             r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2;
+      pe_axis(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2)
+      && l <= lo && hi <= h
+      ==> pe_axis(l, h, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
     lemma ps_axis_w: \forall real l, h, lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r;
       ps_axis(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r) && l <= lo && hi <= h
       ==> ps_axis(l, h, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
@@ -146,6 +176,11 @@
     lemma pn_tight_w: \forall real l, h, lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn;
       pn_tight(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn) && pw_near(l, lo, h, hi)
       ==> pnf_tight(l, h, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
+    lemma pe_tight_w: \forall real l, h, lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
+                              r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2;
+      pe_tight(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2)
+      && pw_near(l, lo, h, hi)
+      ==> pef_tight(l, h, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
     lemma pb_tight_w: \forall real l, h, lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn;
       pb_tight(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn) && pw_near(l, lo, h, hi)
       ==> pbf_tight(l, h, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);

@@ -461,3 +461,40 @@ void tc_fail_map(const char *what, const char *name, const double P[4][4])
     for (i = 0; i < 4; i++)
         printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
 }
+
+/* the rotation of the unit quaternion (w, x, y, z), rounded (rot need not
+ * be orthogonal) */
+void tc_rotation(double rot[3][3], double w, double x, double y, double z)
+{
+    double n = sqrt(w * w + x * x + y * y + z * z);
+    w /= n; x /= n; y /= n; z /= n;
+    rot[0][0] = 1 - 2 * (y * y + z * z); rot[0][1] = 2 * (x * y - w * z); rot[0][2] = 2 * (x * z + w * y);
+    rot[1][0] = 2 * (x * y + w * z); rot[1][1] = 1 - 2 * (x * x + z * z); rot[1][2] = 2 * (y * z - w * x);
+    rot[2][0] = 2 * (x * z - w * y); rot[2][1] = 2 * (y * z + w * x); rot[2][2] = 1 - 2 * (x * x + y * y);
+}
+
+void tc_ell_shape(xu_rng *g, double r, double rad[3], double rot[3][3])
+{
+    int i, j, k;
+    /* one generator call per statement: the same order on every target */
+    double w = xu_rng_sign(g) * xu_rng_unit(g);
+    double x = xu_rng_sign(g) * xu_rng_unit(g);
+    double y = xu_rng_sign(g) * xu_rng_unit(g);
+    double z = xu_rng_sign(g) * xu_rng_unit(g);
+    int kind = xu_rng_int(g, 0, 7);
+    tc_rotation(rot, w + 0x1p-30, x, y, z);
+    if (kind == 7) {            /* a general (sheared, maybe singular) matrix */
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < 3; j++) {
+                double s = xu_rng_sign(g);
+                rot[i][j] = s * xu_rng_unit(g);
+            }
+    }
+    for (k = 0; k < 3; k++) {
+        double s = xu_rng_sign(g);
+        double m = tc_scaled(g, 1.0, kind == 6 ? -30 : -6, 0);
+        rad[k] = s * r * m;
+    }
+    if (kind == 5)              /* a disk */
+        rad[xu_rng_int(g, 0, 2)] = 0;
+}

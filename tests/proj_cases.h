@@ -76,6 +76,14 @@ void tc_sphere_hard(double P[4][4], double c[3], double *r, tc_run run);
  * a ball nearly tangent to the near plane, its radius 0.125 + gap */
 void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap, tc_run run);
 
+/* the rotation of the unit quaternion (w, x, y, z), normalised and rounded */
+void tc_rotation(double rot[3][3], double w, double x, double y, double z);
+/* a random ellipsoid shape of size about r (test_pell, test_pwide): rot a
+ * rounded rotation, or (1 in 8) a general, maybe singular matrix; radii of
+ * random signs, down to 2^-6 r (1 in 8: 2^-30 r), one of them zero in 1 of
+ * 8 (a disk) */
+void tc_ell_shape(xu_rng *g, double r, double rad[3], double rot[3][3]);
+
 /* The first lines of a failure report: "FAIL what (name)" and the map's
  * rows in hexadecimal (the projective tests' on_fail print the rest). */
 void tc_fail_map(const char *what, const char *name, const double P[4][4]);

@@ -131,43 +131,6 @@ static void set_identity(void)
             ROT[i][j] = i == j;
 }
 
-/* the rotation of the unit quaternion (w, x, y, z), rounded (rot need not
- * be orthogonal) */
-static void set_rotation(double w, double x, double y, double z)
-{
-    double n = sqrt(w * w + x * x + y * y + z * z);
-    w /= n; x /= n; y /= n; z /= n;
-    ROT[0][0] = 1 - 2 * (y * y + z * z); ROT[0][1] = 2 * (x * y - w * z); ROT[0][2] = 2 * (x * z + w * y);
-    ROT[1][0] = 2 * (x * y + w * z); ROT[1][1] = 1 - 2 * (x * x + z * z); ROT[1][2] = 2 * (y * z - w * x);
-    ROT[2][0] = 2 * (x * z - w * y); ROT[2][1] = 2 * (y * z + w * x); ROT[2][2] = 1 - 2 * (x * x + y * y);
-}
-
-static void random_shape(xu_rng *g, double r)
-{
-    int i, j, k;
-    /* one generator call per statement: the same order on every target */
-    double w = xu_rng_sign(g) * xu_rng_unit(g);
-    double x = xu_rng_sign(g) * xu_rng_unit(g);
-    double y = xu_rng_sign(g) * xu_rng_unit(g);
-    double z = xu_rng_sign(g) * xu_rng_unit(g);
-    int kind = xu_rng_int(g, 0, 7);
-    set_rotation(w + 0x1p-30, x, y, z);
-    if (kind == 7) {            /* a general (sheared, maybe singular) matrix */
-        for (i = 0; i < 3; i++)
-            for (j = 0; j < 3; j++) {
-                double s = xu_rng_sign(g);
-                ROT[i][j] = s * xu_rng_unit(g);
-            }
-    }
-    for (k = 0; k < 3; k++) {
-        double s = xu_rng_sign(g);
-        double m = tc_scaled(g, 1.0, kind == 6 ? -30 : -6, 0);
-        RAD[k] = s * r * m;
-    }
-    if (kind == 5)              /* a disk */
-        RAD[xu_rng_int(g, 0, 2)] = 0;
-}
-
 /* the ball's hard cases (tests/proj_cases.c), as an ellipsoid */
 static int hard_kind;
 static void hard_run(const char *name, cbx_status want, const char *what)
@@ -177,7 +140,7 @@ static void hard_run(const char *name, cbx_status want, const char *what)
     set_identity();
     RAD[0] = RAD[1] = RAD[2] = R;
     if (hard_kind == 1) {       /* a disk, tilted */
-        set_rotation(0.9, 0.3, -0.2, 0.1);
+        tc_rotation(ROT, 0.9, 0.3, -0.2, 0.1);
         RAD[2] = 0;
     } else if (hard_kind == 2) { /* a needle along the view direction */
         RAD[0] = RAD[1] = R * 0x1p-30;
@@ -241,19 +204,19 @@ static void own_hard(void)
     /* a long thin ellipsoid beside the view axis, tilted: one end near the
      * camera plane */
     C[0] = 3; C[1] = 0; C[2] = -2;
-    set_rotation(0.9, 0.1, 0.4, 0);
+    tc_rotation(ROT, 0.9, 0.1, 0.4, 0);
     RAD[0] = 0.02; RAD[1] = 0.02; RAD[2] = 2.2;
     run_case("tilted needle");
     /* very anisotropic: 2^-30 and 2^10 */
     C[0] = 0; C[1] = 0; C[2] = -3000;
-    set_rotation(0.5, 0.5, 0.5, 0.5);
+    tc_rotation(ROT, 0.5, 0.5, 0.5, 0.5);
     RAD[0] = 0x1p-30; RAD[1] = 0x1p10; RAD[2] = 1;
     run_case("anisotropic");
     /* wide and narrow scaled cameras */
     for (k = 0; k < 8; k++) {
         tc_scaled_camera(P, k);
         C[0] = 0.3; C[1] = 0.2; C[2] = -50;
-        set_rotation(0.8, 0.1, 0.2, 0.3);
+        tc_rotation(ROT, 0.8, 0.1, 0.2, 0.3);
         RAD[0] = 4; RAD[1] = 0.5; RAD[2] = 2;
         run_case("scaled camera");
     }
@@ -270,12 +233,12 @@ int main(int argc, char **argv)
     own_hard();
     for (k = 0; k < n; k++) {
         tc_sphere_camera(&g, P, C, &R);
-        random_shape(&g, R);
+        tc_ell_shape(&g, R, RAD, ROT);
         run_case("random camera");
     }
     for (k = 0; k < n; k++) {
         tc_sphere_general(&g, P, C, &R);
-        random_shape(&g, R);
+        tc_ell_shape(&g, R, RAD, ROT);
         run_case("random map");
     }
     printf("cbx_project_ellipsoid: %ld cases (hard ones, %ld random cameras, %ld random maps)\n",

@@ -61,10 +61,11 @@
 #include "pball_oracle.h"
 #include "proj_cases.h"
 
-enum { FN_SPH, FN_NEAR, FN_BALL, NFN };
+enum { FN_SPH, FN_NEAR, FN_BALL, FN_ELL, NFN };
 enum { K_STATUS, K_SPECIAL, K_RELATION, K_EXACT, K_TIGHT, K_INPUT, K_SAME, NK };
-static const char *const fn_name[NFN] = {"cbx_project_spheref", "cbx_project_box_nearf", "cbx_project_sphere_nearf"};
-static const char *const fn_short[NFN] = {"spheref", "box_nearf", "sphere_nearf"};
+static const char *const fn_name[NFN] = {"cbx_project_spheref", "cbx_project_box_nearf", "cbx_project_sphere_nearf",
+                                          "cbx_project_ellipsoidf"};
+static const char *const fn_short[NFN] = {"spheref", "box_nearf", "sphere_nearf", "ellipsoidf"};
 static const char *const k_name[NK] = {"status", "special", "relation", "exact", "tight", "input", "same"};
 static const char *const k_unit[NK] = {"calls", "calls", "ends", "checks", "ends", "calls", "calls"};
 
@@ -73,6 +74,8 @@ static double P[4][4], C[3], R, WN;
 static cbx_box B;
 /* the float case widened (what the oracles and on_fail see) */
 static double PD[4][4], CD[3], RD, WND;
+/* the ellipsoid: radii E and rot Q (its center C), and their float values widened */
+static double E[3], Q[3][3], ED[3], QD[3][3];
 static cbx_box BD;
 
 static int cur_fn;
@@ -83,6 +86,7 @@ static xu_dists dist[NFN];        /* units of 2^-23 (1 + |end|) */
 static pso_stats Ss;
 static pno_stats Sn;
 static pbo_stats Sb;
+static pso_stats Se;
 static long ex_t20;               /* this call's ends flagged only by the oracle's 2^-20 */
 
 /* ---- reporting ---------------------------------------------------------------- */
@@ -369,6 +373,77 @@ static cbx_status run_ball(const char *name)
 }
 
 /* an expected status of a hard case (counted under status) */
+static cbx_status run_ell(const char *name)
+{
+    cbx_projf pf, pf0;
+    cbx_proj pd;
+    float cf[3], ef[3], qf[3][3], nf[3], nq[3][3], cf0[3], ef0[3], qf0[3][3];
+    cbx_boxf of, of2;
+    cbx_box od, w;
+    cbx_status sf, sf2, sd;
+    int i, j, nan, inf, table = -1;
+    long p0 = Se.passed, f0 = Se.failed;
+    cur_fn = FN_ELL;
+    case_name = name;
+    map_f(&pf, &pd);
+    nan = map_nan(&pf);
+    inf = map_inf(&pf);
+    for (i = 0; i < 3; i++) {
+        CD[i] = cf[i] = f32(C[i]);
+        ED[i] = ef[i] = f32(E[i]);
+        nf[i] = -ef[i];
+        nan |= f_nan(cf[i]) | f_nan(ef[i]);
+        inf |= f_inf(cf[i]) | f_inf(ef[i]);
+        for (j = 0; j < 3; j++) {
+            QD[i][j] = qf[i][j] = f32(Q[i][j]);
+            nq[i][j] = -qf[i][j];
+            nan |= f_nan(qf[i][j]);
+            inf |= f_inf(qf[i][j]);
+        }
+    }
+    pf0 = pf;
+    memcpy(cf0, cf, sizeof cf);
+    memcpy(ef0, ef, sizeof ef);
+    memcpy(qf0, qf, sizeof qf);
+    memset(&of, 0x5a, sizeof of);
+    sf = cbx_project_ellipsoidf(&pf, cf, ef, (const float (*)[3])qf, &of);
+    check(K_INPUT, memcmp(&pf, &pf0, sizeof pf) == 0 && memcmp(cf, cf0, sizeof cf) == 0
+          && memcmp(ef, ef0, sizeof ef) == 0 && memcmp(qf, qf0, sizeof qf) == 0, "the inputs changed");
+    /* rot's columns and the radii negated: M = rot diag(radii) unchanged */
+    memset(&of2, 0xa5, sizeof of2);
+    sf2 = cbx_project_ellipsoidf(&pf, cf, nf, (const float (*)[3])nq, &of2);
+    check(K_SAME, sf2 == sf && memcmp(&of2, &of, sizeof of) == 0,
+          "rot's columns and the radii negated (the same ellipsoid) give other bits");
+    sd = cbx_project_ellipsoid(&pd, CD, ED, (const double (*)[3])QD, &od);
+    if (nan)
+        table = CBX_EINVAL;
+    else if (inf)
+        table = CBX_ERANGE;
+    common(sf, sd, table, &of, &od, &w);
+    pso_judge_ell((const double (*)[4])PD, CD, ED, (const double (*)[3])QD, sf, &w, &Se, on_oracle_fail);
+    after_oracle(p0, f0, Se.passed, Se.failed, &Se.dist);
+    return sf;
+}
+
+/* the ball's hard cases as ellipsoids: a ball, and a tilted disk */
+static int ell_kind;
+static void ell_run(const char *name, cbx_status want, const char *what)
+{
+    int i, j;
+    (void)want;
+    (void)what;
+    for (i = 0; i < 3; i++) {
+        E[i] = R;
+        for (j = 0; j < 3; j++)
+            Q[i][j] = i == j;
+    }
+    if (ell_kind == 1) {
+        tc_rotation(Q, 0.9, 0.3, -0.2, 0.1);
+        E[2] = 0;
+    }
+    run_ell(name);
+}
+
 static void expect(cbx_status got, cbx_status want, const char *what)
 {
     check(K_STATUS, got == want, what);
@@ -535,6 +610,22 @@ static void float_hard(void)
     static const double v[] = {INFINITY, -INFINITY, FLT_MAX, -FLT_MAX, 0x1p-149, -0x1p-149, 0x1.ffffffp127, -1e39};
     int k, s, j, i;
     for (k = 0; k < (int)(sizeof v / sizeof v[0]); k++) {
+        for (s = 0; s < 31; s++) {   /* 16 map entries, the center, the radii, rot */
+            base_case();
+            E[0] = 1; E[1] = 0.5; E[2] = 0.25;
+            for (i = 0; i < 3; i++)
+                for (j = 0; j < 3; j++)
+                    Q[i][j] = i == j;
+            if (s < 16)
+                P[s / 4][s % 4] = v[k];
+            else if (s < 19)
+                C[s - 16] = v[k];
+            else if (s < 22)
+                E[s - 19] = v[k];
+            else
+                Q[(s - 22) / 3][(s - 22) % 3] = v[k];
+            run_ell("an extreme float in one input of the ellipsoid");
+        }
         for (s = 0; s < 21; s++) {   /* 16 map entries, the center, the radius, wn */
             base_case();
             if (s < 16)
@@ -632,16 +723,28 @@ int main(int argc, char **argv)
 {
     long n = argc > 1 ? atol(argv[1]) : 20000, k, passed = 0, failed = 0;
     uint64_t seed = argc > 2 ? strtoull(argv[2], NULL, 10) : 1;
-    xu_rng g;
+    xu_rng g, ge;
     int f, q;
     g.s = seed;
+    ge.s = seed + 1000003;
     pso_init(&Ss, seed + 99);
+    pso_init(&Se, seed + 98);
     pno_init(&Sn, seed + 99);
     pbo_init(&Sb, seed + 99);
     tc_sphere_hard(P, C, &R, sph_run);
     near_hard();
     tc_ball_hard(P, C, &R, &WN, 0x1p-20, ball_run);
     float_hard();
+    for (ell_kind = 0; ell_kind < 2; ell_kind++)
+        tc_sphere_hard(P, C, &R, ell_run);
+    for (k = 0; k < n; k++) {   /* the ellipsoid: a generator of its own (the others' cases unchanged) */
+        tc_sphere_camera(&ge, P, C, &R);
+        tc_ell_shape(&ge, R, E, Q);
+        run_ell("random camera");
+        tc_sphere_general(&ge, P, C, &R);
+        tc_ell_shape(&ge, R, E, Q);
+        run_ell("random map");
+    }
     for (k = 0; k < n; k++) {
         tc_sphere_camera(&g, P, C, &R);
         run_sph("random camera");
@@ -664,6 +767,8 @@ int main(int argc, char **argv)
         printf("%s: %ld calls\n", fn_name[f], n_calls[f]);
         if (f == FN_SPH)
             pso_print(stdout, &Ss);
+        else if (f == FN_ELL)
+            pso_print(stdout, &Se);
         else if (f == FN_NEAR)
             pno_print(stdout, &Sn);
         else
@@ -681,6 +786,7 @@ int main(int argc, char **argv)
         xu_dists_free(&dist[f]);
     }
     pso_free(&Ss);
+    pso_free(&Se);
     pno_free(&Sn);
     pbo_free(&Sb);
     printf("%ld passed, %ld failed\n", passed, failed);

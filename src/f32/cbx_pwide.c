@@ -1,11 +1,13 @@
 /*
  * The binary32 twins of the binary64-only projective bounds:
- * cbx_project_spheref, cbx_project_box_nearf, cbx_project_sphere_nearf.
+ * cbx_project_spheref, cbx_project_box_nearf, cbx_project_sphere_nearf,
+ * cbx_project_ellipsoidf.
  *
  * Each checks its float inputs (NaN -> CBX_EINVAL, an empty box ->
  * CBX_EMPTY, an infinite value -> CBX_ERANGE, as the binary64 function
  * would), widens them to double (exact: every float is a double), calls the
- * binary64 function (src/f64/cbx_psph.c, cbx_pnear.c, cbx_pball.c) and
+ * binary64 function (src/f64/cbx_psph.c, cbx_pnear.c, cbx_pball.c,
+ * cbx_pell.c) and
  * rounds each end of its result outward to float (pw_down, pw_up: at most
  * 2^-22 |end| + 2^-147 further out).  The binary64 contracts carry over to
  * the float ends by the lemmas of specs/cbx_pwide.h: containment because
@@ -234,6 +236,10 @@ static cbx_status pw_narrow(cbx_status st, const cbx_box *b, cbx_boxf *o)
                    PW_PRE(p->m[3][0]), PW_PRE(p->m[3][1]), PW_PRE(p->m[3][2]), PW_PRE(p->m[3][3])
 #define PW_PS(i) PW_ROWS(i), PW_PRE(c[0]), PW_PRE(c[1]), PW_PRE(c[2]), r
 #define PW_PB(i) PW_PS(i), wn
+#define PW_PE(i) PW_ROWS(i), PW_PRE(center[0]), PW_PRE(center[1]), PW_PRE(center[2]), \
+                 PW_PRE(rot[0][0]), PW_PRE(rot[0][1]), PW_PRE(rot[0][2]), PW_PRE(rot[1][0]), PW_PRE(rot[1][1]), \
+                 PW_PRE(rot[1][2]), PW_PRE(rot[2][0]), PW_PRE(rot[2][1]), PW_PRE(rot[2][2]), \
+                 PW_PRE(radii[0]), PW_PRE(radii[1]), PW_PRE(radii[2])
 #define PW_PN(i) PW_ROWS(i), PW_PRE(in->lo[0]), PW_PRE(in->hi[0]), PW_PRE(in->lo[1]), PW_PRE(in->hi[1]), \
                  PW_PRE(in->lo[2]), PW_PRE(in->hi[2]), wn
 /* The widened map's entries, equal to the float ones (stated at the call,
@@ -245,6 +251,9 @@ static cbx_status pw_narrow(cbx_status st, const cbx_box *b, cbx_boxf *o)
 #define PW_NEAR(i) res == CBX_OK ==> \is_finite(out->lo[i]) && \is_finite(out->hi[i]) \
                    && pw_near(out->lo[i], b.lo[i], out->hi[i], b.hi[i])
 #define PW_EQS PW_EQ(0) && PW_EQ(1) && PW_EQ(2) && PW_EQ(3)
+#define PW_EQA1(i) a.d.m[i][0] == PW_PRE(p->m[i][0]) && a.d.m[i][1] == PW_PRE(p->m[i][1]) \
+                   && a.d.m[i][2] == PW_PRE(p->m[i][2]) && a.d.m[i][3] == PW_PRE(p->m[i][3])
+#define PW_EQA PW_EQA1(0) && PW_EQA1(1) && PW_EQA1(2) && PW_EQA1(3)
 cbx_status cbx_project_spheref(const cbx_projf *p, const float c[3], float r, cbx_boxf *out)
 {
     cbx_proj d;
@@ -366,4 +375,113 @@ cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float 
     /*@ assert n1: res == CBX_OK ==> pb_axis(b.lo[1], b.hi[1], PW_PB(1)) && pb_tight(b.lo[1], b.hi[1], PW_PB(1)); */
     /*@ assert n2: res == CBX_OK ==> pb_axis(b.lo[2], b.hi[2], PW_PB(2)) && pb_tight(b.lo[2], b.hi[2], PW_PB(2)); */
     return res;
+}
+
+/* The ellipsoid's float arguments as doubles (exact), in one object. */
+typedef struct { cbx_proj d; double c[3], s[3], r[3][3]; } pw_ell;
+typedef struct { cbx_projf d; float c[3], s[3], r[3][3]; } pw_ellf;
+/* The binary32 ellipsoid once its arguments are known finite: the binary64
+ * bound of the widened arguments, narrowed.  Apart from the checks of
+ * cbx_project_ellipsoidf so that WP's simplifier meets the widened object
+ * and the sixteen NaN tests in different goals (together, a minute of
+ * simplification for each postcondition). */
+#define PE_OLD(i) \old(p->m[i][0]), \old(p->m[i][1]), \old(p->m[i][2]), \old(p->m[i][3]), \
+    \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \
+    \old(center[0]), \old(center[1]), \old(center[2]), \
+    \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \
+    \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]), \old(radii[0]), \old(radii[1]), \old(radii[2])
+#define PE_OK(i) \result == CBX_OK ==> \is_finite(out->lo[i]) && \is_finite(out->hi[i]) \
+    && pe_axis(out->lo[i], out->hi[i], PE_OLD(i)) && pef_tight(out->lo[i], out->hi[i], PE_OLD(i))
+/*@ requires valid: \valid_read(p) && \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
+                    && \valid_read(rot + (0 .. 2)) && \valid(out);
+    requires sep: \separated(out, p) && \separated(out, center + (0 .. 2))
+                  && \separated(out, radii + (0 .. 2)) && \separated(out, rot + (0 .. 2));
+    requires fin: pwf_fin(p) && \is_finite(center[0]) && \is_finite(center[1]) && \is_finite(center[2])
+      && \is_finite(radii[0]) && \is_finite(radii[1]) && \is_finite(radii[2])
+      && \is_finite(rot[0][0]) && \is_finite(rot[0][1]) && \is_finite(rot[0][2]) && \is_finite(rot[1][0])
+      && \is_finite(rot[1][1]) && \is_finite(rot[1][2]) && \is_finite(rot[2][0]) && \is_finite(rot[2][1])
+      && \is_finite(rot[2][2]);
+    assigns *out;
+    ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
+    ensures whole: \result != CBX_OK ==> whole_space_f(out);
+    ensures dom: \result != CBX_ERANGE ==> \old(pef_dom(p, center, radii, rot));
+    ensures behind: \old(pef_dom(p, center, radii, rot)) && !pe_front(\old(p->m[3][0]), \old(p->m[3][1]),
+        \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
+        \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]),
+        \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]), \old(radii[0]), \old(radii[1]), \old(radii[2]))
+      ==> \result == CBX_EBEHIND;
+    ensures ok0: PE_OK(0);
+    ensures ok1: PE_OK(1);
+    ensures ok2: PE_OK(2);
+*/
+static cbx_status pw_ell_wide(const cbx_projf *p, const float center[3], const float radii[3],
+                              const float rot[3][3], cbx_boxf *out)
+{
+    /* the float inputs first, read in one go into a local whose address
+     * is never taken (no memory for the proof: each read's validity is
+     * checked before any call); then widened into one object, every entry
+     * stored (no call that havocs a part of it), so that WP's simplifier
+     * settles each read through stores to the same object at other
+     * constant offsets; const, so that its arrays pass to the binary64
+     * function without a cast */
+    const pw_ellf f = {
+        {{{p->m[0][0], p->m[0][1], p->m[0][2], p->m[0][3]},
+          {p->m[1][0], p->m[1][1], p->m[1][2], p->m[1][3]},
+          {p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3]},
+          {p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]}}},
+        {center[0], center[1], center[2]},
+        {radii[0], radii[1], radii[2]},
+        {{rot[0][0], rot[0][1], rot[0][2]}, {rot[1][0], rot[1][1], rot[1][2]}, {rot[2][0], rot[2][1], rot[2][2]}}};
+    const pw_ell a = {
+        {{{pw_w(f.d.m[0][0]), pw_w(f.d.m[0][1]), pw_w(f.d.m[0][2]), pw_w(f.d.m[0][3])},
+          {pw_w(f.d.m[1][0]), pw_w(f.d.m[1][1]), pw_w(f.d.m[1][2]), pw_w(f.d.m[1][3])},
+          {pw_w(f.d.m[2][0]), pw_w(f.d.m[2][1]), pw_w(f.d.m[2][2]), pw_w(f.d.m[2][3])},
+          {pw_w(f.d.m[3][0]), pw_w(f.d.m[3][1]), pw_w(f.d.m[3][2]), pw_w(f.d.m[3][3])}}},
+        {pw_w(f.c[0]), pw_w(f.c[1]), pw_w(f.c[2])},
+        {pw_w(f.s[0]), pw_w(f.s[1]), pw_w(f.s[2])},
+        {{pw_w(f.r[0][0]), pw_w(f.r[0][1]), pw_w(f.r[0][2])},
+         {pw_w(f.r[1][0]), pw_w(f.r[1][1]), pw_w(f.r[1][2])},
+         {pw_w(f.r[2][0]), pw_w(f.r[2][1]), pw_w(f.r[2][2])}}};
+    cbx_box b;
+    cbx_status st;
+    cbx_status res;
+    /*@ assert eq: PW_EQA && a.c[0] == PW_PRE(center[0]) && a.c[1] == PW_PRE(center[1])
+          && a.c[2] == PW_PRE(center[2]) && a.s[0] == PW_PRE(radii[0]) && a.s[1] == PW_PRE(radii[1])
+          && a.s[2] == PW_PRE(radii[2]); */
+    /*@ assert eqr: a.r[0][0] == PW_PRE(rot[0][0]) && a.r[0][1] == PW_PRE(rot[0][1]) && a.r[0][2] == PW_PRE(rot[0][2])
+          && a.r[1][0] == PW_PRE(rot[1][0]) && a.r[1][1] == PW_PRE(rot[1][1]) && a.r[1][2] == PW_PRE(rot[1][2])
+          && a.r[2][0] == PW_PRE(rot[2][0]) && a.r[2][1] == PW_PRE(rot[2][1]) && a.r[2][2] == PW_PRE(rot[2][2]); */
+    /*@ assert b1: \at(pef_dom(p, center, radii, rot), Pre) <==> pe_dom(&a.d, &a.c[0], &a.s[0], &a.r[0]); */
+    /*@ assert nn: !pe_nan(&a.d, &a.c[0], &a.s[0], &a.r[0]); */
+    st = cbx_project_ellipsoid(&a.d, a.c, a.s, a.r, &b);
+    /*@ assert s0: st == CBX_OK || st == CBX_ERANGE || st == CBX_EBEHIND; */
+    /*@ assert w0: st == CBX_OK ==> pe_axis(b.lo[0], b.hi[0], PW_PE(0)) && pe_tight(b.lo[0], b.hi[0], PW_PE(0)); */
+    /*@ assert w1: st == CBX_OK ==> pe_axis(b.lo[1], b.hi[1], PW_PE(1)) && pe_tight(b.lo[1], b.hi[1], PW_PE(1)); */
+    /*@ assert w2: st == CBX_OK ==> pe_axis(b.lo[2], b.hi[2], PW_PE(2)) && pe_tight(b.lo[2], b.hi[2], PW_PE(2)); */
+    res = pw_narrow(st, &b, out);
+    /*@ assert n0: PW_NEAR(0) && pe_axis(b.lo[0], b.hi[0], PW_PE(0)) && pe_tight(b.lo[0], b.hi[0], PW_PE(0)); */
+    /*@ assert n1: PW_NEAR(1) && pe_axis(b.lo[1], b.hi[1], PW_PE(1)) && pe_tight(b.lo[1], b.hi[1], PW_PE(1)); */
+    /*@ assert n2: PW_NEAR(2) && pe_axis(b.lo[2], b.hi[2], PW_PE(2)) && pe_tight(b.lo[2], b.hi[2], PW_PE(2)); */
+    return res;
+}
+
+cbx_status cbx_project_ellipsoidf(const cbx_projf *p, const float center[3], const float radii[3],
+                                  const float rot[3][3], cbx_boxf *out)
+{
+    if (pw_proj_nan(p) | pw_nan(center[0]) | pw_nan(center[1]) | pw_nan(center[2])
+        | pw_nan(radii[0]) | pw_nan(radii[1]) | pw_nan(radii[2])
+        | pw_nan(rot[0][0]) | pw_nan(rot[0][1]) | pw_nan(rot[0][2]) | pw_nan(rot[1][0]) | pw_nan(rot[1][1])
+        | pw_nan(rot[1][2]) | pw_nan(rot[2][0]) | pw_nan(rot[2][1]) | pw_nan(rot[2][2])) {
+        pw_whole(out);
+        return CBX_EINVAL;
+    }
+    if (!(pw_proj_ok(p) && pw_fin(center[0]) && pw_fin(center[1]) && pw_fin(center[2])
+          && pw_fin(radii[0]) && pw_fin(radii[1]) && pw_fin(radii[2])
+          && pw_fin(rot[0][0]) && pw_fin(rot[0][1]) && pw_fin(rot[0][2]) && pw_fin(rot[1][0])
+          && pw_fin(rot[1][1]) && pw_fin(rot[1][2]) && pw_fin(rot[2][0]) && pw_fin(rot[2][1])
+          && pw_fin(rot[2][2]))) {
+        pw_whole(out);
+        return CBX_ERANGE;
+    }
+    return pw_ell_wide(p, center, radii, rot, out);
 }

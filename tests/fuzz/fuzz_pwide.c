@@ -1,7 +1,7 @@
 /*
  * libFuzzer harness: the binary32 twins of the binary64-only projective
  * bounds (cbx_project_spheref, cbx_project_box_nearf,
- * cbx_project_sphere_nearf; src/f32/cbx_pwide.c) against the binary64
+ * cbx_project_sphere_nearf, cbx_project_ellipsoidf; src/f32/cbx_pwide.c) against the binary64
  * functions on the widened inputs and the exact oracles of
  * tests/psph_oracle.c, pnear_oracle.c and pball_oracle.c, as
  * tests/test_pwide.c judges them.
@@ -11,11 +11,14 @@
  * reads as 0): the 16 entries of the map, row by row, then
  *   spheref (control & 3 = 0 or 3): c0, c1, c2, r (20 floats);
  *   box_nearf (1): lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], wn (23 floats);
- *   sphere_nearf (2): c0, c1, c2, r, wn (21 floats).
- * Control bits 0-1: the twin (above).  Toward CBX_OK: 2: row 3 replaced by
+ *   sphere_nearf (2): c0, c1, c2, r, wn (21 floats);
+ *   ellipsoidf (control bit 7, whatever bits 0-1): c0, c1, c2, the three
+ *     radii, rot row by row (31 floats).
+ * Control bits 0-1: the twin (above; bit 7 the ellipsoid).  Toward CBX_OK: 2: row 3 replaced by
  * (0, 0, -1, 0) (a camera looking down -z, W = -z); 3: the sphere twins:
  * the center's z moved in front of that camera (spheref: -|z| - 2 |r| - 1,
- * sphere_nearf: -|z|, in float), box_nearf: each box axis ordered (lo and
+ * sphere_nearf: -|z|, ellipsoidf: -|z| - 2 (|s0| + |s1| + |s2|) - 1, in
+ * float), box_nearf: each box axis ordered (lo and
  * hi swapped when lo > hi); 4: wn replaced by |wn|; 5: every finite
  * nonzero float's binary exponent (frexpf's) folded modulo 16 into
  * [-8, 7] (unchanged there; significand and sign kept), applied first, so
@@ -40,33 +43,35 @@
  *     test_pwide, by the twins' 2^-19 (1 + |end|) on each end's distance to
  *     the exact end;
  *   - the same bits for the same set: box_nearf with out == in, the sphere
- *     twins with radius -r.
+ *     twins with radius -r, the ellipsoid with rot's columns and the radii
+ *     negated.
  */
 #include "fuzz_common.h"
 #include "psph_oracle.h"
 #include "pnear_oracle.h"
 #include "pball_oracle.h"
 
-enum { FN_SPH, FN_NEAR, FN_BALL };
-static const char *const fn_name[3] = {"cbx_project_spheref", "cbx_project_box_nearf",
-                                       "cbx_project_sphere_nearf"};
+enum { FN_SPH, FN_NEAR, FN_BALL, FN_ELL };
+static const char *const fn_name[4] = {"cbx_project_spheref", "cbx_project_box_nearf",
+                                       "cbx_project_sphere_nearf", "cbx_project_ellipsoidf"};
 
 #define PW_FILL_BITS UINT32_C(0x7fc0f00d) /* the output's pre-fill: a NaN */
 
 static unsigned CTL;
 static int FN, NV;
-static float V[23];
+static float V[31];
 static cbx_projf PF;
-static float CF[3], RF, WF;
+static float CF[3], RF, WF, EF[3], QF[3][3];
 static cbx_boxf BF, OF;
 static cbx_status SF, SD = (cbx_status)-1;
 /* the float case widened (what the binary64 function and the oracles see),
  * and the binary64 result */
-static double PD[4][4], CD[3], RD, WD;
+static double PD[4][4], CD[3], RD, WD, ED[3], QD[3][3];
 static cbx_box BD, OD;
 static pso_stats Ss;
 static pno_stats Sn;
 static pbo_stats Sb;
+static pso_stats Se;
 
 static uint32_t f_bits(float x)
 {
@@ -107,11 +112,16 @@ static void dump(FILE *f)
     if (FN == FN_NEAR) {
         print_f(f, "box lo", BF.lo, 3);
         print_f(f, "box hi", BF.hi, 3);
+    } else if (FN == FN_ELL) {
+        print_f(f, "center", CF, 3);
+        print_f(f, "radii", EF, 3);
+        for (i = 0; i < 3; i++)
+            print_f(f, "rot row", QF[i], 3);
     } else {
         print_f(f, "center", CF, 3);
         print_f(f, "radius", &RF, 1);
     }
-    if (FN != FN_SPH)
+    if (FN == FN_NEAR || FN == FN_BALL)
         print_f(f, "wn", &WF, 1);
     fprintf(f, "  twin status = %s (%d)\n", cbx_status_name(SF), (int)SF);
     print_f(f, "out lo", OF.lo, 3);
@@ -200,7 +210,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     cbx_projf p0;
     cbx_proj pd;
     cbx_boxf b0, o2;
-    float c0[3], r0, w0;
+    float c0[3], r0, w0, e0[3], q0[3][3], ne[3], nq[3][3];
     cbx_status s2;
     cbx_box w;
     in.p = data;
@@ -209,8 +219,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fz_dump_fn = dump;
     SD = (cbx_status)-1;
     CTL = fz_byte(&in);
-    FN = (int)(CTL & 3u) == 3 ? FN_SPH : (int)(CTL & 3u);
-    NV = FN == FN_SPH ? 20 : FN == FN_NEAR ? 23 : 21;
+    FN = (CTL & 128u) ? FN_ELL : (int)(CTL & 3u) == 3 ? FN_SPH : (int)(CTL & 3u);
+    NV = FN == FN_ELL ? 31 : FN == FN_SPH ? 20 : FN == FN_NEAR ? 23 : 21;
     memset(V, 0, sizeof V);
     for (i = 0; i < NV; i++) {
         uint32_t u = 0;
@@ -221,6 +231,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memset(&PF, 0, sizeof PF);
     memset(&BF, 0, sizeof BF);
     CF[0] = CF[1] = CF[2] = RF = WF = 0;
+    memset(EF, 0, sizeof EF);
+    memset(QF, 0, sizeof QF);
     for (i = 0; i < NV; i++) {
         float x = (CTL & 32u) ? fold(V[i]) : V[i];
         if (i < 16)
@@ -232,6 +244,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                 WF = x;
         } else if (i < 19)
             CF[i - 16] = x;
+        else if (FN == FN_ELL) {
+            if (i < 22)
+                EF[i - 19] = x;
+            else
+                QF[(i - 22) / 3][(i - 22) % 3] = x;
+        }
         else if (i == 19)
             RF = x;
         else
@@ -256,6 +274,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         } else if (FN == FN_SPH) {
             if (isfinite(CF[2]) && isfinite(RF))
                 CF[2] = -fabsf(CF[2]) - 2 * fabsf(RF) - 1;
+        } else if (FN == FN_ELL) {
+            if (isfinite(CF[2]) && isfinite(EF[0]) && isfinite(EF[1]) && isfinite(EF[2]))
+                CF[2] = -fabsf(CF[2]) - 2 * (fabsf(EF[0]) + fabsf(EF[1]) + fabsf(EF[2])) - 1;
         } else {
             CF[2] = -fabsf(CF[2]);
         }
@@ -277,7 +298,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     RD = RF;
     WD = WF;
-    if (FN != FN_SPH) {
+    for (i = 0; i < 3; i++) {
+        ED[i] = EF[i];
+        for (j = 0; j < 3; j++)
+            QD[i][j] = QF[i][j];
+    }
+    if (FN == FN_NEAR || FN == FN_BALL) {
         nan |= f_nan(WF);
         inf |= f_inf(WF);
     }
@@ -286,6 +312,15 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             nan |= f_nan(BF.lo[i]) | f_nan(BF.hi[i]);
             inf |= f_inf(BF.lo[i]) | f_inf(BF.hi[i]);
             empty |= BF.hi[i] < BF.lo[i] || BF.lo[i] == (float)INFINITY || BF.hi[i] == -(float)INFINITY;
+        }
+    } else if (FN == FN_ELL) {
+        for (i = 0; i < 3; i++) {
+            nan |= f_nan(CF[i]) | f_nan(EF[i]);
+            inf |= f_inf(CF[i]) | f_inf(EF[i]);
+            for (j = 0; j < 3; j++) {
+                nan |= f_nan(QF[i][j]);
+                inf |= f_inf(QF[i][j]);
+            }
         }
     } else {
         for (i = 0; i < 4; i++) {
@@ -301,15 +336,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     memcpy(c0, CF, sizeof c0);
     r0 = RF;
     w0 = WF;
+    memcpy(e0, EF, sizeof e0);
+    memcpy(q0, QF, sizeof q0);
     fill(&OF);
     SF = FN == FN_SPH ? cbx_project_spheref(&PF, CF, RF, &OF)
        : FN == FN_NEAR ? cbx_project_box_nearf(&PF, &BF, WF, &OF)
+       : FN == FN_ELL ? cbx_project_ellipsoidf(&PF, CF, EF, (const float (*)[3])QF, &OF)
        : cbx_project_sphere_nearf(&PF, CF, RF, WF, &OF);
     if (memcmp(&PF, &p0, sizeof PF) || memcmp(&BF, &b0, sizeof BF) || memcmp(CF, c0, sizeof c0)
-        || memcmp(&RF, &r0, sizeof RF) || memcmp(&WF, &w0, sizeof WF))
+        || memcmp(&RF, &r0, sizeof RF) || memcmp(&WF, &w0, sizeof WF) || memcmp(EF, e0, sizeof e0)
+        || memcmp(QF, q0, sizeof q0))
         fz_fail("an input was changed");
     if (SF != CBX_OK && SF != CBX_EINVAL && SF != CBX_ERANGE
-        && SF != (FN == FN_SPH ? CBX_EBEHIND : CBX_EMPTY))
+        && SF != (FN == FN_SPH || FN == FN_ELL ? CBX_EBEHIND : CBX_EMPTY))
         fz_fail("status %d is not a documented value of %s", (int)SF, fn_name[FN]);
     for (i = 0; i < 3; i++) {
         if (f_bits(OF.lo[i]) == PW_FILL_BITS || f_bits(OF.hi[i]) == PW_FILL_BITS)
@@ -321,6 +360,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         OD.lo[i] = OD.hi[i] = fz_fill();
     SD = FN == FN_SPH ? cbx_project_sphere(&pd, CD, RD, &OD)
        : FN == FN_NEAR ? cbx_project_box_near(&pd, &BD, WD, &OD)
+       : FN == FN_ELL ? cbx_project_ellipsoid(&pd, CD, ED, (const double (*)[3])QD, &OD)
        : cbx_project_sphere_near(&pd, CD, RD, WD, &OD);
     if (SF != SD)
         fz_fail("status differs from the binary64 function's on the widened inputs (%s)",
@@ -349,6 +389,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         s2 = cbx_project_box_nearf(&PF, &o2, WF, &o2);
         if (s2 != SF || memcmp(&o2, &OF, sizeof o2))
             fz_fail("out == in gives another status or other bits");
+    } else if (FN == FN_ELL) {
+        for (i = 0; i < 3; i++) {
+            ne[i] = -EF[i];
+            for (j = 0; j < 3; j++)
+                nq[i][j] = -QF[i][j];
+        }
+        fill(&o2);
+        s2 = cbx_project_ellipsoidf(&PF, CF, ne, (const float (*)[3])nq, &o2);
+        if (s2 != SF || memcmp(&o2, &OF, sizeof o2))
+            fz_fail("rot's columns and the radii negated (the same ellipsoid) give another status or other bits");
     } else {
         fill(&o2);
         s2 = FN == FN_SPH ? cbx_project_spheref(&PF, CF, -RF, &o2)
@@ -366,10 +416,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         pso_init(&Ss, 1);
         pno_init(&Sn, 1);
         pbo_init(&Sb, 1);
+        pso_init(&Se, 1);
     }
     if (FN == FN_SPH) {
         pso_judge((const double (*)[4])PD, CD, RD, SF, &w, &Ss, on_oracle_fail);
         tight(&Ss.dist);
+    } else if (FN == FN_ELL) {
+        pso_judge_ell((const double (*)[4])PD, CD, ED, (const double (*)[3])QD, SF, &w, &Se, on_oracle_fail);
+        tight(&Se.dist);
     } else if (FN == FN_NEAR) {
         pno_judge((const double (*)[4])PD, &BD, WD, SF, &w, &Sn, on_oracle_fail);
         tight(&Sn.dist);

@@ -556,6 +556,14 @@ static void pwide(void)
     seedf(H, "ball-folded", 0x3e, 21, CAM90, 0.5, 0.25, 3, 2, -0.125);
     seedf(H, "ball-camera-behind", 0x02, 21, CAM90, 0, 0, 5, 1, 0.1);
     seedf(H, "ball-zero-wn", 0x02, 21, CAM90, 0, 0, -1, 2, 0);
+    /* ellipsoidf (control bit 7): 31 floats, the center, the radii, rot */
+    seedf(H, "ell-camera-front", 0x80, 31, CAM90, 0.2, -0.1, -5, 1, 0.5, 0.25, 1, 0, 0, 0, 1, 0, 0, 0, 1);
+    seedf(H, "ell-camera-front-forced", 0x8c, 31, CAM90, 0.2, -0.1, 5, 1, 0.5, 0.25, 1, 0, 0, 0, 1, 0, 0, 0, 1);
+    seedf(H, "ell-disk-tilted", 0x80, 31, CAM90, 0.1, 0.2, -4, 1, 0.5, 0, 0.8, -0.36, 0.48, 0.6, 0.48, -0.64,
+          0, 0.8, 0.6);
+    seedf(H, "ell-needle-at-camera", 0x80, 31, CAM90, 0, 0, -2, 1e-9, 1e-9, 1.5, 1, 0, 0, 0, 1, 0, 0, 0, 1);
+    seedf(H, "ell-camera-behind", 0x80, 31, CAM90, 0, 0, 5, 1, 1, 1, 1, 0, 0, 0, 1, 0, 0, 0, 1);
+    seedf(H, "ell-nan-rot", 0x80, 31, CAM90, 0, 0, -5, 1, 1, 1, 1, 0, 0, 0, NaN, 0, 0, 0, 1);
 }
 
 int main(int argc, char **argv)
