@@ -266,6 +266,8 @@ typedef struct bench_ctx {
     cbx_projf *pmf;           /* the same cameras, balls and boxes in float */
     cbx_boxf *pinf;           /* (each value rounded to nearest): the       */
     float *pscf, *psrf, *pwnf; /* binary32 twins' rows                      */
+    float *pesf;              /* and the ellipsoids' radii and rotations    */
+    float (*perf)[3][3];
     double (*per)[3][3];      /* and rotations                              */
     /* rotation motion: keyframe pairs (0 to 90 degrees apart) and boxes;
      * rpc: the 16 pieces of the first pair, prepared once (row R4p) */
@@ -465,6 +467,7 @@ REF_KERNEL(k_pnear_ref, cbx_box, ref_pnear(&b->pm[i], &b->pcx[i], b->pwn[i], &o[
 REF_KERNEL(k_pell_ref, cbx_box, ref_pell(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
 REF_KERNEL(k_pell_obb, cbx_box, ref_pell_obb8(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
 CBX_KERNEL(k_pell, cbx_box, cbx_project_ellipsoid(&b->pm[i], b->psc + 3 * i, b->pes + 3 * i, (const double (*)[3])b->per[i], &o[i]))
+CBX_KERNEL(k_pellf, cbx_boxf, cbx_project_ellipsoidf(&b->pmf[i], b->pscf + 3 * i, b->pesf + 3 * i, (const float (*)[3])b->perf[i], &o[i]))
 CBX_KERNEL(k_psphf, cbx_boxf, cbx_project_spheref(&b->pmf[i], b->pscf + 3 * i, b->psrf[i], &o[i]))
 CBX_KERNEL(k_pnearf, cbx_boxf, cbx_project_box_nearf(&b->pmf[i], &b->pinf[i], b->pwnf[i], &o[i]))
 CBX_KERNEL(k_pballf, cbx_boxf, cbx_project_sphere_nearf(&b->pmf[i], b->pscf + 3 * i, b->psrf[i], b->pwnf[i], &o[i]))
@@ -1193,6 +1196,8 @@ static void define_rows(bench_ctx *b, const sizes *z)
             k_pball_front, n, P, 0, bsz, MK_NONE);
     add_row(G_P, 0, "PSf", "projected ball, binary32: certbox `cbx_project_spheref` (the binary64 bound, rounded out)",
             k_psphf, n, P, 0, fsz, MK_NONE);
+    add_row(G_P, 0, "PEf", "projected ellipsoid, binary32: certbox `cbx_project_ellipsoidf`", k_pellf,
+            n, P, 0, fsz, MK_NONE);
     add_row(G_P, 0, "PNf", "box in front, clipped, binary32: certbox `cbx_project_box_nearf`", k_pnearf,
             n, P, 0, fsz, MK_NONE);
     add_row(G_P, 0, "PBf", "ball in front, clipped, binary32: certbox `cbx_project_sphere_nearf`", k_pballf,
@@ -1613,6 +1618,8 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
     b->pscf = xmalloc(3 * n * sizeof *b->pscf);
     b->psrf = xmalloc(n * sizeof *b->psrf);
     b->pwnf = xmalloc(n * sizeof *b->pwnf);
+    b->pesf = xmalloc(3 * n * sizeof *b->pesf);
+    b->perf = xmalloc(n * sizeof *b->perf);
     rng.s = seed + 7;
     for (k = 0; k < n; k++) {
         double R[3][3], T[3], f, asp, nr, fr, vc[3], h, pr[4][4], v[4][4];
@@ -1685,6 +1692,9 @@ static void setup_cases(bench_ctx *b, size_t n, unsigned long seed)
             b->pinf[k].lo[i] = (float)b->pin[k].lo[i];
             b->pinf[k].hi[i] = (float)b->pin[k].hi[i];
             b->pscf[3 * k + i] = (float)b->psc[3 * k + i];
+            b->pesf[3 * k + i] = (float)b->pes[3 * k + i];
+            for (j = 0; j < 3; j++)
+                b->perf[k][i][j] = (float)b->per[k][i][j];
         }
         b->psrf[k] = (float)b->psr[k];
         b->pwnf[k] = (float)b->pwn[k];
