@@ -464,6 +464,14 @@ void tc_fail_map(const char *what, const char *name, const double P[4][4])
 
 /* the rotation of the unit quaternion (w, x, y, z), rounded (rot need not
  * be orthogonal) */
+void tc_identity3(double rot[3][3])
+{
+    int i, j;
+    for (i = 0; i < 3; i++)
+        for (j = 0; j < 3; j++)
+            rot[i][j] = i == j;
+}
+
 void tc_rotation(double rot[3][3], double w, double x, double y, double z)
 {
     double n = sqrt(w * w + x * x + y * y + z * z);

@@ -76,6 +76,8 @@ void tc_sphere_hard(double P[4][4], double c[3], double *r, tc_run run);
  * a ball nearly tangent to the near plane, its radius 0.125 + gap */
 void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap, tc_run run);
 
+/* the 3x3 identity */
+void tc_identity3(double rot[3][3]);
 /* the rotation of the unit quaternion (w, x, y, z), normalised and rounded */
 void tc_rotation(double rot[3][3], double w, double x, double y, double z);
 /* a random ellipsoid shape of size about r (test_pell, test_pwide): rot a

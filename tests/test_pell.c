@@ -123,21 +123,13 @@ static void run_case(const char *name)
 }
 
 /* ---- shapes --------------------------------------------------------------- */
-static void set_identity(void)
-{
-    int i, j;
-    for (i = 0; i < 3; i++)
-        for (j = 0; j < 3; j++)
-            ROT[i][j] = i == j;
-}
-
 /* the ball's hard cases (tests/proj_cases.c), as an ellipsoid */
 static int hard_kind;
 static void hard_run(const char *name, cbx_status want, const char *what)
 {
     (void)want;
     (void)what;
-    set_identity();
+    tc_identity3(ROT);
     RAD[0] = RAD[1] = RAD[2] = R;
     if (hard_kind == 1) {       /* a disk, tilted */
         tc_rotation(ROT, 0.9, 0.3, -0.2, 0.1);
@@ -154,7 +146,7 @@ static void own_hard(void)
     tc_identity_camera(P);
     C[0] = 0.5; C[1] = -0.25; C[2] = -6;
     /* a point, a segment, a disk, a singular rot */
-    set_identity();
+    tc_identity3(ROT);
     RAD[0] = RAD[1] = RAD[2] = 0;
     run_case("point");
     RAD[0] = 2;
@@ -165,14 +157,14 @@ static void own_hard(void)
     ROT[2][0] = ROT[2][1] = ROT[2][2] = 0;
     run_case("singular rot");
     /* the domain's edges: 2^30 in, just above out */
-    set_identity();
+    tc_identity3(ROT);
     RAD[0] = RAD[1] = RAD[2] = 1;
     ROT[0][1] = 0x1p30;
     C[2] = -0x1p40;
     run_case("rot at 2^30");
     ROT[0][1] = 0x1.0000000000001p30;
     run_case("rot above 2^30");
-    set_identity();
+    tc_identity3(ROT);
     RAD[1] = -0x1p30;
     run_case("radius at -2^30");
     RAD[1] = INFINITY;
@@ -184,7 +176,7 @@ static void own_hard(void)
     run_case("NaN in rot");
     /* each entry of rot and each radius just outside the domain alone */
     for (k = 0; k < 12; k++) {
-        set_identity();
+        tc_identity3(ROT);
         RAD[0] = RAD[1] = RAD[2] = 1;
         if (k < 9)
             ROT[k / 3][k % 3] = (k % 2 ? -1 : 1) * 0x1.0000000000001p30;
@@ -196,7 +188,7 @@ static void own_hard(void)
      * just in front of it (W = -z here) */
     C[0] = 0.1; C[1] = 0.1; C[2] = -5;
     for (k = 0; k < 6; k++) {
-        set_identity();
+        tc_identity3(ROT);
         RAD[0] = RAD[1] = 0.01;
         RAD[2] = k == 0 ? 5 : k == 1 ? 5 - 0x1p-20 : k == 2 ? 5 - 0x1p-40 : k == 3 ? 5 - 0x1p-50 : k == 4 ? 6 : 4;
         run_case("needle toward the camera plane");

@@ -429,14 +429,10 @@ static cbx_status run_ell(const char *name)
 static int ell_kind;
 static void ell_run(const char *name, cbx_status want, const char *what)
 {
-    int i, j;
     (void)want;
     (void)what;
-    for (i = 0; i < 3; i++) {
-        E[i] = R;
-        for (j = 0; j < 3; j++)
-            Q[i][j] = i == j;
-    }
+    E[0] = E[1] = E[2] = R;
+    tc_identity3(Q);
     if (ell_kind == 1) {
         tc_rotation(Q, 0.9, 0.3, -0.2, 0.1);
         E[2] = 0;
@@ -613,9 +609,7 @@ static void float_hard(void)
         for (s = 0; s < 31; s++) {   /* 16 map entries, the center, the radii, rot */
             base_case();
             E[0] = 1; E[1] = 0.5; E[2] = 0.25;
-            for (i = 0; i < 3; i++)
-                for (j = 0; j < 3; j++)
-                    Q[i][j] = i == j;
+            tc_identity3(Q);
             if (s < 16)
                 P[s / 4][s % 4] = v[k];
             else if (s < 19)
