@@ -1,5 +1,5 @@
 (* certbox: Frama-C's task loop without its 50 ms naps (compiled and loaded
-   by proofs/idle.sh).
+   by proofs/plugin.sh, with proofs/prune.ml).
    WP runs its goals as tasks of Frama-C's task server (Task in Frama-C's
    kernel): each round of the server's loop moves every running goal one
    step (simplification, the prover's start, a look at whether it has

@@ -10,7 +10,7 @@
 set -eu
 cd "$(dirname "$0")/.."
 digest=$(LC_ALL=C sha256sum include/*.h src/*/*.c src/*/*.h specs/*.h proofs/*.c proofs/*.drv.in \
-         scripts/incs.sh proofs/fcts.py proofs/run.sh proofs/job.sh proofs/setup.sh proofs/report.py proofs/idle.ml proofs/idle.sh | sha256sum | cut -c1-64)
+         scripts/incs.sh proofs/fcts.py proofs/run.sh proofs/job.sh proofs/setup.sh proofs/report.py proofs/idle.ml proofs/prune.ml proofs/plugin.sh | sha256sum | cut -c1-64)
 case ${1:-} in
   --check) [ -f build/proof/inputs.sha256 ] && [ "$(cat build/proof/inputs.sha256)" = "$digest" ] ;;
   *) echo "$digest" ;;

@@ -47,7 +47,8 @@
 #             src/f32/cbx_pwide.c, on the contracts of PS64, PN64, PB64,
 #             with the lemmas of specs/cbx_pwide.h, proven in LP64): both
 #             families' logic in one unit, so their provers are the
-#             unpruned entries cvc4r, z3r (proofs/setup.sh); its smoke tests
+#             entries cvc4rw, z3rw (proofs/setup.sh: both formats' IEEE
+#             axioms); its smoke tests
 #   P64, P32  the projective bound (proofs/proj.c, proj_f.c, with the
 #             lemmas of specs/cbx_proj_logic.h and cbx_proj.h), without
 #             -wp-split; PA64, PA32 its functions marked for -wp-split;
@@ -67,11 +68,11 @@ set -eu
 name=$1
 root=$(pwd)
 out=build/proof
-FC="frama-c $(sh proofs/idle.sh) $(for d in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$root" "${d#-I}"; done)"
+FC="frama-c $(sh proofs/plugin.sh) $(for d in $(sh scripts/incs.sh) -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$root" "${d#-I}"; done)"
 PAR=${CBX_WP_PAR:-2}
 # each family's jobs use its own prover entries (proofs/setup.sh: the same
 # provers, with the axioms that family never needs left out)
-case $name in PW|SPW) fam= ;; *64*) fam=64 ;; *) fam=32 ;; esac
+case $name in PW|SPW) fam=w ;; *64*) fam=64 ;; *) fam=32 ;; esac
 WP="-wp -wp-rte -wp-par $PAR"   # + the provers, limits and cache of each pass (below)
 # Smoke tests.  A smoke goal that the prover proves (false derived) means
 # goals proved vacuously.  A vacuous goal matters only at a point that some

@@ -27,19 +27,24 @@ rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256 $out/report.md
 inputs=$(sh proofs/inputs.sh)
 conf=$(sh proofs/setup.sh $out)
 export WHY3CONFIG="$conf"
-sh proofs/idle.sh > /dev/null   # checked once, before the jobs (proofs/idle.sh)
+# the modules every Frama-C run loads (proofs/plugin.sh), built once, before the jobs
+sh proofs/plugin.sh > /dev/null
 NPROC=$(nproc 2>/dev/null || echo 2)
-# One job more than there are cores, each with one prover process per core:
-# WP's task loop sleeps 50 ms between its rounds (Frama-C's Task.on_idle)
-# and does its own work (VC generation, Qed) on one core, so two jobs on two
-# cores left them idle a fifth of the time (measured 2026-11-28: PB64 and
-# PN64 side by side, 250 s of CPU in 160 s of wall time on 2 cores).
-JOBS=${CBX_JOBS:-$((NPROC + 1))}
+# As many jobs as there are cores, each with one prover process per core.
+# A job is WP's own work (VC generation, Qed, Why3's encoding of each task)
+# on one core plus its prover processes; with proofs/idle.ml it keeps
+# about 1.6 cores busy alone, so two jobs fill two cores, and a third only
+# adds contention: jobs K64 K32 B64b B32 A64 A32, 2026-11-30 on 2 cores,
+# took 297 s two at a time and 326 s three at a time (304 s two at a time
+# with one prover process each).  Before proofs/idle.ml (Frama-C's task loop
+# slept 50 ms between rounds: two jobs left a fifth of two cores idle, PB64
+# beside PN64, 2026-11-28) the pool ran one job more than there are cores.
+JOBS=${CBX_JOBS:-$NPROC}
 export CBX_WP_PAR="${CBX_WP_PAR:-$NPROC}"
 # longest first (the wall times, three jobs at a time, of the clean-clone
-# run of a4e3f73, 2026-11-28: L64 took 151 s there, started 21st), so that
-# the pool ends evenly
-LIST="B64a T64 PB64 PA64 L64 PN64 K64 PA32 B64b B32 K32 A64 I64 PS64 PE64 S64 BS64 P64 P32 BS32 S32 A32 L32 LP64 BSA64 BSA32 SPS64 PSR64 ST64 SP32 SP64 SPN64 SPB64 SPE64 SI64 PW SPW"
+# run of 509e75c, 2026-11-30: PW took 357 s there, started last), so that
+# the pool ends evenly with the short smoke jobs
+LIST="B64a T64 PW PB64 L64 PE64 PN64 PA64 PA32 B64b B32 S64 K64 K32 A64 P64 P32 I64 BS64 S32 A32 PS64 BS32 SPW LP64 L32 SPS64 ST64 BSA64 BSA32 PSR64 SP32 SP64 SPN64 SPB64 SPE64 SI64"
 echo "proof: $(echo $LIST | wc -w) jobs, $JOBS at a time, $CBX_WP_PAR prover processes each"
 start=$(date +%s)
 # a failed job shows in the report (RESULT: NOT PROVED), not here

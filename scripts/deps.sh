@@ -49,9 +49,11 @@ if is proof; then
   have why3 || need="$need why3"
   have cvc4 || need="$need cvc4"
   have z3 || need="$need z3"
-  # ocamlfind compiles proofs/idle.ml, Frama-C's task loop without its
-  # naps (proofs/idle.sh), with the OCaml compiler
+  # ocamlfind compiles proofs/idle.ml and proofs/prune.ml (proofs/plugin.sh:
+  # the task loop without its naps, the drivers' transformations) with the
+  # OCaml compiler, against Why3's library (frama-c-base depends on it)
   have ocamlfind || need="$need ocaml-findlib libfindlib-ocaml-dev"
+  ocamlfind query why3 > /dev/null 2>&1 || need="$need libwhy3-ocaml-dev"
   have ocamlopt || need="$need ocaml"
 fi
 if is embedded; then

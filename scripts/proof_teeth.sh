@@ -26,7 +26,7 @@ case_() {
   split=${9:--wp-split}; [ "$split" = - ] && split=''
   d=$B/$name
   teeth_copy "$d" "$file" "$old" "$new"
-  fam=64; case $tu in *pwide.c) fam=;; *_f.c) fam=32;; esac
+  fam=64; case $tu in *pwide.c) fam=w;; *_f.c) fam=32;; esac
   # DEFS: the lemma groups of the function's proof job (proofs/job.sh), so
   # that a goal fails for the weakened body, not for a missing lemma
   (cd "$d" && frama-c $(teeth_incs "$d") ${DEFS:-} "$tu" \

@@ -10,11 +10,11 @@ teeth_setup() {
   export WHY3CONFIG
 }
 # teeth_incs DIR: Frama-C's include options for the copy in DIR (the
-# library's folders, scripts/incs.sh, and specs/), and the task loop of
-# proofs/idle.sh.
+# library's folders, scripts/incs.sh, and specs/), and the modules of
+# proofs/plugin.sh (the drivers' transformations, the task loop).
 teeth_incs() {
   for i in $(sh "$TEETH_ROOT/scripts/incs.sh") -Ispecs; do printf -- '-cpp-extra-args=-I%s/%s ' "$1" "${i#-I}"; done
-  sh "$TEETH_ROOT/proofs/idle.sh"
+  sh "$TEETH_ROOT/proofs/plugin.sh"
 }
 # teeth_copy DIR FILE OLD NEW: a scratch copy of include/, src/, specs/ and
 # proofs/ in DIR, with OLD replaced by NEW in DIR/FILE (OLD must occur

@@ -236,10 +236,11 @@ static cbx_status pw_narrow(cbx_status st, const cbx_box *b, cbx_boxf *o)
                    PW_PRE(p->m[3][0]), PW_PRE(p->m[3][1]), PW_PRE(p->m[3][2]), PW_PRE(p->m[3][3])
 #define PW_PS(i) PW_ROWS(i), PW_PRE(c[0]), PW_PRE(c[1]), PW_PRE(c[2]), r
 #define PW_PB(i) PW_PS(i), wn
-#define PW_PE(i) PW_ROWS(i), PW_PRE(center[0]), PW_PRE(center[1]), PW_PRE(center[2]), \
-                 PW_PRE(rot[0][0]), PW_PRE(rot[0][1]), PW_PRE(rot[0][2]), PW_PRE(rot[1][0]), PW_PRE(rot[1][1]), \
-                 PW_PRE(rot[1][2]), PW_PRE(rot[2][0]), PW_PRE(rot[2][1]), PW_PRE(rot[2][2]), \
-                 PW_PRE(radii[0]), PW_PRE(radii[1]), PW_PRE(radii[2])
+#define PW_ELL PW_PRE(center[0]), PW_PRE(center[1]), PW_PRE(center[2]), \
+               PW_PRE(rot[0][0]), PW_PRE(rot[0][1]), PW_PRE(rot[0][2]), PW_PRE(rot[1][0]), PW_PRE(rot[1][1]), \
+               PW_PRE(rot[1][2]), PW_PRE(rot[2][0]), PW_PRE(rot[2][1]), PW_PRE(rot[2][2]), \
+               PW_PRE(radii[0]), PW_PRE(radii[1]), PW_PRE(radii[2])
+#define PW_PE(i) PW_ROWS(i), PW_ELL
 #define PW_PN(i) PW_ROWS(i), PW_PRE(in->lo[0]), PW_PRE(in->hi[0]), PW_PRE(in->lo[1]), PW_PRE(in->hi[1]), \
                  PW_PRE(in->lo[2]), PW_PRE(in->hi[2]), wn
 /* The widened map's entries, equal to the float ones (stated at the call,
@@ -380,18 +381,14 @@ cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float 
 /* The ellipsoid's float arguments as doubles (exact), in one object. */
 typedef struct { cbx_proj d; double c[3], s[3], r[3][3]; } pw_ell;
 typedef struct { cbx_projf d; float c[3], s[3], r[3][3]; } pw_ellf;
+/* Output axis i's promise (PW_PE: the arguments read at Pre, as \old). */
+#define PE_OK(i) \result == CBX_OK ==> \is_finite(out->lo[i]) && \is_finite(out->hi[i]) \
+    && pe_axis(out->lo[i], out->hi[i], PW_PE(i)) && pef_tight(out->lo[i], out->hi[i], PW_PE(i))
 /* The binary32 ellipsoid once its arguments are known finite: the binary64
  * bound of the widened arguments, narrowed.  Apart from the checks of
  * cbx_project_ellipsoidf so that WP's simplifier meets the widened object
  * and the sixteen NaN tests in different goals (together, a minute of
  * simplification for each postcondition). */
-#define PE_OLD(i) \old(p->m[i][0]), \old(p->m[i][1]), \old(p->m[i][2]), \old(p->m[i][3]), \
-    \old(p->m[3][0]), \old(p->m[3][1]), \old(p->m[3][2]), \old(p->m[3][3]), \
-    \old(center[0]), \old(center[1]), \old(center[2]), \
-    \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]), \
-    \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]), \old(radii[0]), \old(radii[1]), \old(radii[2])
-#define PE_OK(i) \result == CBX_OK ==> \is_finite(out->lo[i]) && \is_finite(out->hi[i]) \
-    && pe_axis(out->lo[i], out->hi[i], PE_OLD(i)) && pef_tight(out->lo[i], out->hi[i], PE_OLD(i))
 /*@ requires valid: \valid_read(p) && \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
                     && \valid_read(rot + (0 .. 2)) && \valid(out);
     requires sep: \separated(out, p) && \separated(out, center + (0 .. 2))
@@ -405,11 +402,8 @@ typedef struct { cbx_projf d; float c[3], s[3], r[3][3]; } pw_ellf;
     ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
     ensures whole: \result != CBX_OK ==> whole_space_f(out);
     ensures dom: \result != CBX_ERANGE ==> \old(pef_dom(p, center, radii, rot));
-    ensures behind: \old(pef_dom(p, center, radii, rot)) && !pe_front(\old(p->m[3][0]), \old(p->m[3][1]),
-        \old(p->m[3][2]), \old(p->m[3][3]), \old(center[0]), \old(center[1]), \old(center[2]),
-        \old(rot[0][0]), \old(rot[0][1]), \old(rot[0][2]), \old(rot[1][0]), \old(rot[1][1]), \old(rot[1][2]),
-        \old(rot[2][0]), \old(rot[2][1]), \old(rot[2][2]), \old(radii[0]), \old(radii[1]), \old(radii[2]))
-      ==> \result == CBX_EBEHIND;
+    ensures behind: \old(pef_dom(p, center, radii, rot)) && !pe_front(PW_PRE(p->m[3][0]), PW_PRE(p->m[3][1]),
+        PW_PRE(p->m[3][2]), PW_PRE(p->m[3][3]), PW_ELL) ==> \result == CBX_EBEHIND;
     ensures ok0: PE_OK(0);
     ensures ok1: PE_OK(1);
     ensures ok2: PE_OK(2);
