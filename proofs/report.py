@@ -202,7 +202,7 @@ def main():
     out.append('Tools: %s; %s; %s; %s.' % (tool('frama-c -version'), tool('why3 --version'),
                tool('cvc4 --version | head -1'), tool('z3 -version')))
     out.append('Wall time: %s s in all (%s jobs at a time, %s prover processes each).\n'
-               % (wall, os.environ.get('CBX_JOBS', str((os.cpu_count() or 2) + 1)), os.environ.get('CBX_WP_PAR', '?')))
+               % (wall, os.environ.get('CBX_JOBS', '?'), os.environ.get('CBX_WP_PAR', '?')))
     if unfinished:
         out.append('Jobs that did not finish: %s\n' % ', '.join(unfinished))
     if failed:

@@ -40,6 +40,7 @@ NPROC=$(nproc 2>/dev/null || echo 2)
 # slept 50 ms between rounds: two jobs left a fifth of two cores idle, PB64
 # beside PN64, 2026-11-28) the pool ran one job more than there are cores.
 JOBS=${CBX_JOBS:-$NPROC}
+export CBX_JOBS=$JOBS   # for the report
 export CBX_WP_PAR="${CBX_WP_PAR:-$NPROC}"
 # longest first (the wall times, three jobs at a time, of the clean-clone
 # run of 509e75c, 2026-11-30: PW took 357 s there, started last), so that
