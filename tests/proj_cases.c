@@ -462,8 +462,7 @@ void tc_fail_map(const char *what, const char *name, const double P[4][4])
         printf(" [%a %a %a %a]", P[i][0], P[i][1], P[i][2], P[i][3]);
 }
 
-/* the rotation of the unit quaternion (w, x, y, z), rounded (rot need not
- * be orthogonal) */
+/* the 3x3 identity */
 void tc_identity3(double rot[3][3])
 {
     int i, j;
@@ -472,6 +471,8 @@ void tc_identity3(double rot[3][3])
             rot[i][j] = i == j;
 }
 
+/* the rotation of the unit quaternion (w, x, y, z), rounded (rot need not
+ * be orthogonal) */
 void tc_rotation(double rot[3][3], double w, double x, double y, double z)
 {
     double n = sqrt(w * w + x * x + y * y + z * z);
