@@ -1,7 +1,9 @@
-(* certbox: the axioms no goal of a family needs, left out of each prover
-   task by one Why3 transformation (compiled and loaded into Frama-C with
-   proofs/idle.ml by proofs/plugin.sh; named first in the drivers that
-   proofs/setup.sh writes).
+(* certbox: what a prover task does not need, left out by two Why3
+   transformations (compiled and loaded into Frama-C with proofs/idle.ml by
+   proofs/plugin.sh; named first in the drivers that proofs/setup.sh
+   writes): certbox_prune64 / _prune32 / _prunew, the axioms no goal of a
+   family needs (this comment), and certbox_strip, the float facts a
+   memory-access goal does not need (below).
 
    Left out, every axiom (and lemma, which a task carries as an axiom) of:
    - bv.Pow2int, int.Power: the facts about integer powers of two
@@ -83,3 +85,120 @@ let () =
       Trans.register_env_transform name (prune fam)
         ~desc:"certbox: leave out the axioms no goal of this family needs (proofs/prune.ml)")
     [ ("certbox_prune64", `F64); ("certbox_prune32", `F32); ("certbox_prunew", `Both) ]
+
+(* certbox_strip: a memory-access goal without the float facts.
+   Most goals that -wp-rte adds are memory accesses: \valid_read(a + 3),
+   \valid(out + i), \separated(...) (1,665 of the prover tasks, 2026-11-30).
+   Their proof needs the functions' validity and separation preconditions
+   and integer arithmetic, never a fact about a float; yet each task carries
+   every float hypothesis of its path and the whole IEEE theory, which CVC4
+   preprocesses (about 0.14 s a task) before it looks at the goal.  For a
+   task whose goal, once its premises are moved into hypotheses (Why3's
+   introduce_premises), is a conjunction of WP's memory predicates
+   (valid_rd, valid_rw, valid_obj, invalid, separated, included), this
+   leaves out every declaration that names a float: the IEEE types (binary64,
+   binary32, the rounding modes), then in order every symbol whose type or
+   definition names one of those, every axiom and hypothesis that names one,
+   and the metas about them.  Every other task goes on unchanged.
+   Like certbox_prune*, it only takes hypotheses away (a declaration is left
+   out only with everything that names it, so the task stays well formed;
+   if the goal itself names a symbol left out, the task goes on unchanged):
+   a goal proved from fewer hypotheses is proved from all of them. *)
+
+(* the types of the IEEE theories: binary64, binary32, rounding modes *)
+let float_types env =
+  List.fold_left
+    (fun acc th ->
+      List.fold_left
+        (fun acc td ->
+          match td.Theory.td_node with
+          | Theory.Decl { Decl.d_node = Decl.Dtype ts } -> Ty.Sts.add ts acc
+          | _ -> acc)
+        acc (Env.read_theory env [ "ieee_float" ] th).Theory.th_decls)
+    Ty.Sts.empty [ "Float64"; "Float32"; "RoundingMode" ]
+
+(* WP's memory predicates (frama_c_wp/memory.mlw) *)
+let mem_preds env =
+  let th = Env.read_theory env [ "frama_c_wp"; "memory" ] "Memory" in
+  List.fold_left
+    (fun acc n -> Term.Sls.add (Theory.ns_find_ls th.Theory.th_export [ n ]) acc)
+    Term.Sls.empty
+    [ "valid_rw"; "valid_rd"; "valid_obj"; "invalid"; "separated"; "included" ]
+
+(* what is left out so far: types, function and predicate symbols, props *)
+type gone = { tys : Ty.Sts.t; lss : Term.Sls.t; prs : Decl.Spr.t }
+
+let names_gone g =
+  let ty t = Ty.ty_s_any (fun ts -> Ty.Sts.mem ts g.tys) t in
+  let tm t = Term.t_s_any ty (fun ls -> Term.Sls.mem ls g.lss) t in
+  let sg ls = List.exists ty ls.Term.ls_args || Opt.fold (fun _ -> ty) false ls.Term.ls_value in
+  let open Decl in
+  function
+  | Dtype ts -> (match ts.Ty.ts_def with Ty.Alias t -> ty t | _ -> false)
+  | Ddata dl -> List.exists (fun (_, cl) -> List.exists (fun (cs, _) -> sg cs) cl) dl
+  | Dparam ls -> sg ls
+  | Dlogic l -> List.exists (fun (ls, ld) -> sg ls || tm (ls_defn_axiom ld)) l
+  | Dind (_, l) -> List.exists (fun (ls, ax) -> sg ls || List.exists (fun (_, f) -> tm f) ax) l
+  | Dprop (_, _, f) -> tm f
+
+let leave_out g d =
+  let ls g l = { g with lss = Term.Sls.add l g.lss } in
+  let open Decl in
+  match d.d_node with
+  | Dtype ts -> { g with tys = Ty.Sts.add ts g.tys }
+  | Ddata dl ->
+      List.fold_left
+        (fun g (ts, cl) ->
+          List.fold_left
+            (fun g (cs, pl) -> List.fold_left (fun g p -> Opt.fold ls g p) (ls g cs) pl)
+            { g with tys = Ty.Sts.add ts g.tys } cl)
+        g dl
+  | Dparam l -> ls g l
+  | Dlogic l -> List.fold_left (fun g (l, _) -> ls g l) g l
+  | Dind (_, l) -> List.fold_left (fun g (l, _) -> ls g l) g l
+  | Dprop (_, pr, _) -> { g with prs = Decl.Spr.add pr g.prs }
+
+let meta_gone g =
+  List.exists (function
+    | Theory.MAty t -> Ty.ty_s_any (fun ts -> Ty.Sts.mem ts g.tys) t
+    | Theory.MAts ts -> Ty.Sts.mem ts g.tys
+    | Theory.MAls l -> Term.Sls.mem l g.lss
+    | Theory.MApr pr -> Decl.Spr.mem pr g.prs
+    | _ -> false)
+
+exception Goal_gone
+
+let strip env =
+  let mems = mem_preds env in
+  let rec memory c =
+    match c.Term.t_node with
+    | Term.Tapp (ls, _) -> Term.Sls.mem ls mems
+    | Term.Tbinop (Term.Tand, a, b) -> memory a && memory b
+    | _ -> false
+  in
+  let intro = Trans.lookup_transform "introduce_premises" env in
+  (* one pass over the declarations, memoised on the task's prefix like
+     Why3's own transformations: the library's theories, which every task
+     shares, are looked at once *)
+  let cut =
+    Trans.fold_map
+      (fun hd (g, task) ->
+        let td = hd.Task.task_decl in
+        match td.Theory.td_node with
+        | Theory.Decl { Decl.d_node = Decl.Dprop (Decl.Pgoal, _, _) as d } ->
+            if names_gone g d then raise Goal_gone else (g, Task.add_tdecl task td)
+        | Theory.Decl d ->
+            if names_gone g d.Decl.d_node then (leave_out g d, task) else (g, Task.add_tdecl task td)
+        | Theory.Meta (_, args) -> if meta_gone g args then (g, task) else (g, Task.add_tdecl task td)
+        | _ -> (g, Task.add_tdecl task td))
+      { tys = float_types env; lss = Term.Sls.empty; prs = Decl.Spr.empty }
+      None
+  in
+  Trans.store (fun task ->
+      let t = Trans.apply intro task in
+      if not (memory (Task.task_goal_fmla t)) then task
+      else try Trans.apply cut t with Goal_gone -> task)
+
+let () =
+  Trans.register_env_transform "certbox_strip" strip
+    ~desc:"certbox: a memory-access goal without the declarations that name a float (proofs/prune.ml)"

@@ -233,6 +233,12 @@ case_ pell-hi-loose src/f64/cbx_pell.c pe_axis_of proofs/pell.c cov,tight,ok ass
 case_ ellf-radius-swapped src/f32/cbx_pwide.c pw_ell_wide proofs/pwide.c eq,eqr,b1,nn,s0,w0,w1,w2,n0,n1,n2,st,whole,dom,behind,ok0,ok1,ok2 'assert_eq$' \
   "        {pw_w(f.s[0]), pw_w(f.s[1]), pw_w(f.s[2])}," \
   "        {pw_w(f.s[0]), pw_w(f.s[1]), pw_w(f.s[1])}," - &
+# 38. the binary32 ellipsoid's input check without its last entry (an
+#    infinite rotation entry let through: the check's contract, which
+#    cbx_project_ellipsoidf's range status rests on, must fail)
+case_ ellf-check-short src/f32/cbx_pwide.c pe_in_fin proofs/pwide.c "" ensures \
+  "        && pw_fin(r[2][2]);" \
+  "        ;" - &
 wait
 for v in "$B"/*/verdict; do
   cat "$v"

@@ -75,16 +75,21 @@
       && ps_row(p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]);
     predicate psf_nan(cbx_projf *p, float *c, float r) =
       proj_nan_f(p) || \is_NaN(c[0]) || \is_NaN(c[1]) || \is_NaN(c[2]) || \is_NaN(r);
-    predicate psf_dom(cbx_projf *p, float *c, float r) =
-      pwf_fin(p) && \is_finite(c[0]) && \is_finite(c[1]) && \is_finite(c[2]) && \is_finite(r)
-      && pwf_rows(p) && ps_ctr(c[0], c[1], c[2], r);
+    // psf_fin, pnf_fin, pbf_fin, pef_fin: every input finite and the map's
+    // rows in the binary64 functions' range (what each twin's C check of
+    // its inputs tests, before it widens them)
+    predicate psf_fin(cbx_projf *p, float *c, float r) =
+      pwf_fin(p) && pwf_rows(p) && \is_finite(c[0]) && \is_finite(c[1]) && \is_finite(c[2]) && \is_finite(r);
+    predicate psf_dom(cbx_projf *p, float *c, float r) = psf_fin(p, c, r) && ps_ctr(c[0], c[1], c[2], r);
     predicate pnf_nan(cbx_projf *p, cbx_boxf *b, float wn) =
       proj_nan_f(p) || box_nan_f(b) || \is_NaN(wn);
+    predicate pnf_fin(cbx_projf *p, cbx_boxf *b, float wn) =
+      pwf_fin(p) && pwf_rows(p) && \is_finite(b->lo[0]) && \is_finite(b->hi[0]) && \is_finite(b->lo[1])
+      && \is_finite(b->hi[1]) && \is_finite(b->lo[2]) && \is_finite(b->hi[2]) && \is_finite(wn);
     predicate pnf_dom(cbx_projf *p, cbx_boxf *b, float wn) =
-      pwf_fin(p) && \is_finite(b->lo[0]) && \is_finite(b->hi[0]) && \is_finite(b->lo[1])
-      && \is_finite(b->hi[1]) && \is_finite(b->lo[2]) && \is_finite(b->hi[2]) && \is_finite(wn)
-      && pwf_rows(p) && pn_bx(b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]) && pn_wn(wn);
+      pnf_fin(p, b, wn) && pn_bx(b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]) && pn_wn(wn);
     predicate pbf_nan(cbx_projf *p, float *c, float r, float wn) = psf_nan(p, c, r) || \is_NaN(wn);
+    predicate pbf_fin(cbx_projf *p, float *c, float r, float wn) = psf_fin(p, c, r) && \is_finite(wn);
     predicate pbf_dom(cbx_projf *p, float *c, float r, float wn) =
       psf_dom(p, c, r) && \is_finite(wn) && pn_wn(wn);
     predicate pef_nan(cbx_projf *p, float *c, float *s, float (*r)[3]) =
@@ -92,13 +97,14 @@
       || \is_NaN(s[0]) || \is_NaN(s[1]) || \is_NaN(s[2])
       || \is_NaN(r[0][0]) || \is_NaN(r[0][1]) || \is_NaN(r[0][2]) || \is_NaN(r[1][0]) || \is_NaN(r[1][1])
       || \is_NaN(r[1][2]) || \is_NaN(r[2][0]) || \is_NaN(r[2][1]) || \is_NaN(r[2][2]);
-    predicate pef_dom(cbx_projf *p, float *c, float *s, float (*r)[3]) =
-      pwf_fin(p) && \is_finite(c[0]) && \is_finite(c[1]) && \is_finite(c[2])
+    predicate pef_fin(cbx_projf *p, float *c, float *s, float (*r)[3]) =
+      pwf_fin(p) && pwf_rows(p) && \is_finite(c[0]) && \is_finite(c[1]) && \is_finite(c[2])
       && \is_finite(s[0]) && \is_finite(s[1]) && \is_finite(s[2])
       && \is_finite(r[0][0]) && \is_finite(r[0][1]) && \is_finite(r[0][2]) && \is_finite(r[1][0])
       && \is_finite(r[1][1]) && \is_finite(r[1][2]) && \is_finite(r[2][0]) && \is_finite(r[2][1])
-      && \is_finite(r[2][2])
-      && pwf_rows(p) && ps_ctr(c[0], c[1], c[2], 0)
+      && \is_finite(r[2][2]);
+    predicate pef_dom(cbx_projf *p, float *c, float *s, float (*r)[3]) =
+      pef_fin(p, c, s, r) && ps_ctr(c[0], c[1], c[2], 0)
       && pe_sh(r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2], s[0], s[1], s[2]);
 
     // A float map (box) widened to double: the same values, all finite.

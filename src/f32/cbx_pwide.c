@@ -96,6 +96,77 @@ static int pw_proj_ok(const cbx_projf *p)
 */
 static int pw_nopt(float l, float h) { return h < l || l > PW_FMAX || h < -PW_FMAX; }
 
+/* Each twin's inputs, checked in one call each: any NaN (the predicate
+ * of its nan_input behavior), then every input finite with the map's rows
+ * in range (psf_fin, ...).  Apart from the public functions so that WP's
+ * simplifier meets the sixteen tests once, in one goal, and not again in
+ * every postcondition of the caller (2026-11-30: cbx_project_ellipsoidf's
+ * postconditions took 85 s of simplification with the tests inline). */
+/*@ requires \valid_read(p) && \valid_read(c + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> psf_nan(p, c, r);
+*/
+static int ps_in_nan(const cbx_projf *p, const float c[3], float r)
+{
+    return pw_proj_nan(p) | pw_nan(c[0]) | pw_nan(c[1]) | pw_nan(c[2]) | pw_nan(r);
+}
+
+/*@ requires \valid_read(p) && \valid_read(c + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> psf_fin(p, c, r);
+*/
+static int ps_in_fin(const cbx_projf *p, const float c[3], float r)
+{
+    return pw_proj_ok(p) && pw_fin(c[0]) && pw_fin(c[1]) && pw_fin(c[2]) && pw_fin(r);
+}
+
+/*@ requires \valid_read(p) && \valid_read(b);
+    assigns \nothing;
+    ensures \result != 0 <==> pnf_nan(p, b, wn);
+*/
+static int pn_in_nan(const cbx_projf *p, const cbx_boxf *b, float wn)
+{
+    return pw_proj_nan(p) | pw_nan(b->lo[0]) | pw_nan(b->hi[0]) | pw_nan(b->lo[1]) | pw_nan(b->hi[1])
+         | pw_nan(b->lo[2]) | pw_nan(b->hi[2]) | pw_nan(wn);
+}
+
+/*@ requires \valid_read(p) && \valid_read(b);
+    assigns \nothing;
+    ensures \result != 0 <==> pnf_fin(p, b, wn);
+*/
+static int pn_in_fin(const cbx_projf *p, const cbx_boxf *b, float wn)
+{
+    return pw_proj_ok(p) && pw_fin(b->lo[0]) && pw_fin(b->hi[0]) && pw_fin(b->lo[1]) && pw_fin(b->hi[1])
+        && pw_fin(b->lo[2]) && pw_fin(b->hi[2]) && pw_fin(wn);
+}
+
+/*@ requires \valid_read(p) && \valid_read(c + (0 .. 2))
+             && \valid_read(s + (0 .. 2)) && \valid_read(r + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> pef_nan(p, c, s, r);
+*/
+static int pe_in_nan(const cbx_projf *p, const float c[3], const float s[3], const float r[3][3])
+{
+    return pw_proj_nan(p) | pw_nan(c[0]) | pw_nan(c[1]) | pw_nan(c[2])
+         | pw_nan(s[0]) | pw_nan(s[1]) | pw_nan(s[2])
+         | pw_nan(r[0][0]) | pw_nan(r[0][1]) | pw_nan(r[0][2]) | pw_nan(r[1][0]) | pw_nan(r[1][1])
+         | pw_nan(r[1][2]) | pw_nan(r[2][0]) | pw_nan(r[2][1]) | pw_nan(r[2][2]);
+}
+
+/*@ requires \valid_read(p) && \valid_read(c + (0 .. 2))
+             && \valid_read(s + (0 .. 2)) && \valid_read(r + (0 .. 2));
+    assigns \nothing;
+    ensures \result != 0 <==> pef_fin(p, c, s, r);
+*/
+static int pe_in_fin(const cbx_projf *p, const float c[3], const float s[3], const float r[3][3])
+{
+    return pw_proj_ok(p) && pw_fin(c[0]) && pw_fin(c[1]) && pw_fin(c[2])
+        && pw_fin(s[0]) && pw_fin(s[1]) && pw_fin(s[2])
+        && pw_fin(r[0][0]) && pw_fin(r[0][1]) && pw_fin(r[0][2]) && pw_fin(r[1][0])
+        && pw_fin(r[1][1]) && pw_fin(r[1][2]) && pw_fin(r[2][0]) && pw_fin(r[2][1])
+        && pw_fin(r[2][2]);
+}
+
 /* ---- widening (exact) ------------------------------------------------- */
 /* A float as a double: the same value (every float is a double). */
 /*@ requires fin: \is_finite(x);
@@ -263,11 +334,11 @@ cbx_status cbx_project_spheref(const cbx_projf *p, const float c[3], float r, cb
     cbx_box b;
     cbx_status st;
     cbx_status res;
-    if (pw_proj_nan(p) | pw_nan(c[0]) | pw_nan(c[1]) | pw_nan(c[2]) | pw_nan(r)) {
+    if (ps_in_nan(p, c, r)) {
         pw_whole(out);
         return CBX_EINVAL;
     }
-    if (!(pw_proj_ok(p) && pw_fin(c[0]) && pw_fin(c[1]) && pw_fin(c[2]) && pw_fin(r))) {
+    if (!ps_in_fin(p, c, r)) {
         pw_whole(out);
         return CBX_ERANGE;
     }
@@ -294,8 +365,7 @@ cbx_status cbx_project_box_nearf(const cbx_projf *p, const cbx_boxf *in, float w
     double wd;
     cbx_status st;
     cbx_status res;
-    if (pw_proj_nan(p) | pw_nan(in->lo[0]) | pw_nan(in->hi[0]) | pw_nan(in->lo[1]) | pw_nan(in->hi[1])
-        | pw_nan(in->lo[2]) | pw_nan(in->hi[2]) | pw_nan(wn)) {
+    if (pn_in_nan(p, in, wn)) {
         pw_whole(out);
         return CBX_EINVAL;
     }
@@ -303,8 +373,7 @@ cbx_status cbx_project_box_nearf(const cbx_projf *p, const cbx_boxf *in, float w
         pw_empty(out);
         return CBX_EMPTY;
     }
-    if (!(pw_proj_ok(p) && pw_fin(in->lo[0]) && pw_fin(in->hi[0]) && pw_fin(in->lo[1]) && pw_fin(in->hi[1])
-          && pw_fin(in->lo[2]) && pw_fin(in->hi[2]) && pw_fin(wn))) {
+    if (!pn_in_fin(p, in, wn)) {
         pw_whole(out);
         return CBX_ERANGE;
     }
@@ -345,11 +414,11 @@ cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float 
     cbx_box b;
     cbx_status st;
     cbx_status res;
-    if (pw_proj_nan(p) | pw_nan(c[0]) | pw_nan(c[1]) | pw_nan(c[2]) | pw_nan(r) | pw_nan(wn)) {
+    if (ps_in_nan(p, c, r) | pw_nan(wn)) {
         pw_whole(out);
         return CBX_EINVAL;
     }
-    if (!(pw_proj_ok(p) && pw_fin(c[0]) && pw_fin(c[1]) && pw_fin(c[2]) && pw_fin(r) && pw_fin(wn))) {
+    if (!(ps_in_fin(p, c, r) && pw_fin(wn))) {
         pw_whole(out);
         return CBX_ERANGE;
     }
@@ -393,11 +462,7 @@ typedef struct { cbx_projf d; float c[3], s[3], r[3][3]; } pw_ellf;
                     && \valid_read(rot + (0 .. 2)) && \valid(out);
     requires sep: \separated(out, p) && \separated(out, center + (0 .. 2))
                   && \separated(out, radii + (0 .. 2)) && \separated(out, rot + (0 .. 2));
-    requires fin: pwf_fin(p) && \is_finite(center[0]) && \is_finite(center[1]) && \is_finite(center[2])
-      && \is_finite(radii[0]) && \is_finite(radii[1]) && \is_finite(radii[2])
-      && \is_finite(rot[0][0]) && \is_finite(rot[0][1]) && \is_finite(rot[0][2]) && \is_finite(rot[1][0])
-      && \is_finite(rot[1][1]) && \is_finite(rot[1][2]) && \is_finite(rot[2][0]) && \is_finite(rot[2][1])
-      && \is_finite(rot[2][2]);
+    requires fin: pef_fin(p, center, radii, rot);
     assigns *out;
     ensures st: \result == CBX_OK || \result == CBX_ERANGE || \result == CBX_EBEHIND;
     ensures whole: \result != CBX_OK ==> whole_space_f(out);
@@ -462,18 +527,11 @@ static cbx_status pw_ell_wide(const cbx_projf *p, const float center[3], const f
 cbx_status cbx_project_ellipsoidf(const cbx_projf *p, const float center[3], const float radii[3],
                                   const float rot[3][3], cbx_boxf *out)
 {
-    if (pw_proj_nan(p) | pw_nan(center[0]) | pw_nan(center[1]) | pw_nan(center[2])
-        | pw_nan(radii[0]) | pw_nan(radii[1]) | pw_nan(radii[2])
-        | pw_nan(rot[0][0]) | pw_nan(rot[0][1]) | pw_nan(rot[0][2]) | pw_nan(rot[1][0]) | pw_nan(rot[1][1])
-        | pw_nan(rot[1][2]) | pw_nan(rot[2][0]) | pw_nan(rot[2][1]) | pw_nan(rot[2][2])) {
+    if (pe_in_nan(p, center, radii, rot)) {
         pw_whole(out);
         return CBX_EINVAL;
     }
-    if (!(pw_proj_ok(p) && pw_fin(center[0]) && pw_fin(center[1]) && pw_fin(center[2])
-          && pw_fin(radii[0]) && pw_fin(radii[1]) && pw_fin(radii[2])
-          && pw_fin(rot[0][0]) && pw_fin(rot[0][1]) && pw_fin(rot[0][2]) && pw_fin(rot[1][0])
-          && pw_fin(rot[1][1]) && pw_fin(rot[1][2]) && pw_fin(rot[2][0]) && pw_fin(rot[2][1])
-          && pw_fin(rot[2][2]))) {
+    if (!pe_in_fin(p, center, radii, rot)) {
         pw_whole(out);
         return CBX_ERANGE;
     }
