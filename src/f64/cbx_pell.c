@@ -398,15 +398,33 @@ static int pe_any_nan(const cbx_proj *p, const double c[3], const double s[3], c
 */
 static int pe_dom_in(const cbx_proj *p, const double c[3], const double s[3], const double r[3][3])
 {
+    /* every input read before the first test: a read after the tests of
+     * && carries their paths into its validity goal (2026-11-30: 2 s of
+     * WP's simplifier for each of 30 reads) */
     int w0 = ps_row_in(p->m[0][0], p->m[0][1], p->m[0][2], p->m[0][3]);
     int w1 = ps_row_in(p->m[1][0], p->m[1][1], p->m[1][2], p->m[1][3]);
     int w2 = ps_row_in(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3]);
     int w3 = ps_row_in(p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]);
-    int ct = ps_in(c[0], PS_M) && ps_in(c[1], PS_M) && ps_in(c[2], PS_M);
-    int rs = ps_in(s[0], PE_S) && ps_in(s[1], PE_S) && ps_in(s[2], PE_S);
-    int m0 = ps_in(r[0][0], PE_S) && ps_in(r[0][1], PE_S) && ps_in(r[0][2], PE_S);
-    int m1 = ps_in(r[1][0], PE_S) && ps_in(r[1][1], PE_S) && ps_in(r[1][2], PE_S);
-    int m2 = ps_in(r[2][0], PE_S) && ps_in(r[2][1], PE_S) && ps_in(r[2][2], PE_S);
+    const double c0 = c[0];
+    const double c1 = c[1];
+    const double c2 = c[2];
+    const double s0 = s[0];
+    const double s1 = s[1];
+    const double s2 = s[2];
+    const double r00 = r[0][0];
+    const double r01 = r[0][1];
+    const double r02 = r[0][2];
+    const double r10 = r[1][0];
+    const double r11 = r[1][1];
+    const double r12 = r[1][2];
+    const double r20 = r[2][0];
+    const double r21 = r[2][1];
+    const double r22 = r[2][2];
+    int ct = ps_in(c0, PS_M) && ps_in(c1, PS_M) && ps_in(c2, PS_M);
+    int rs = ps_in(s0, PE_S) && ps_in(s1, PE_S) && ps_in(s2, PE_S);
+    int m0 = ps_in(r00, PE_S) && ps_in(r01, PE_S) && ps_in(r02, PE_S);
+    int m1 = ps_in(r10, PE_S) && ps_in(r11, PE_S) && ps_in(r12, PE_S);
+    int m2 = ps_in(r20, PE_S) && ps_in(r21, PE_S) && ps_in(r22, PE_S);
     return w0 && w1 && w2 && w3 && ct && rs && m0 && m1 && m2;
 }
 
