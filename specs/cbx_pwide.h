@@ -75,9 +75,10 @@
       && ps_row(p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]);
     predicate psf_nan(cbx_projf *p, float *c, float r) =
       proj_nan_f(p) || \is_NaN(c[0]) || \is_NaN(c[1]) || \is_NaN(c[2]) || \is_NaN(r);
-    // psf_fin, pnf_fin, pbf_fin, pef_fin: every input finite and the map's
-    // rows in the binary64 functions' range (what each twin's C check of
-    // its inputs tests, before it widens them)
+    // psf_fin, pnf_fin, pef_fin: every input finite and the map's rows in
+    // the binary64 functions' range (what each twin's C check of its inputs
+    // tests, before it widens them; the ball clipped at a near plane checks
+    // psf_fin and its wn)
     predicate psf_fin(cbx_projf *p, float *c, float r) =
       pwf_fin(p) && pwf_rows(p) && \is_finite(c[0]) && \is_finite(c[1]) && \is_finite(c[2]) && \is_finite(r);
     predicate psf_dom(cbx_projf *p, float *c, float r) = psf_fin(p, c, r) && ps_ctr(c[0], c[1], c[2], r);
@@ -89,7 +90,6 @@
     predicate pnf_dom(cbx_projf *p, cbx_boxf *b, float wn) =
       pnf_fin(p, b, wn) && pn_bx(b->lo[0], b->hi[0], b->lo[1], b->hi[1], b->lo[2], b->hi[2]) && pn_wn(wn);
     predicate pbf_nan(cbx_projf *p, float *c, float r, float wn) = psf_nan(p, c, r) || \is_NaN(wn);
-    predicate pbf_fin(cbx_projf *p, float *c, float r, float wn) = psf_fin(p, c, r) && \is_finite(wn);
     predicate pbf_dom(cbx_projf *p, float *c, float r, float wn) =
       psf_dom(p, c, r) && \is_finite(wn) && pn_wn(wn);
     predicate pef_nan(cbx_projf *p, float *c, float *s, float (*r)[3]) =
