@@ -55,11 +55,13 @@ let family = function
   | `F32 -> common @ [ ([ "ieee_float" ], "Float32", unused_ops); ([ "ieee_float" ], "Float64", []) ]
   | `Both -> common @ [ ([ "ieee_float" ], "Float64", unused_ops); ([ "ieee_float" ], "Float32", unused_ops) ]
 
+(* the declarations of a theory as loaded *)
+let decls env path th = (Env.read_theory env path th).Theory.th_decls
+
 (* the prop symbols named by a list, looked up in the theories as loaded *)
 let props env spec =
   List.fold_left
     (fun acc (path, th, names) ->
-      let t = Env.read_theory env path th in
       List.fold_left
         (fun acc td ->
           match td.Theory.td_node with
@@ -67,7 +69,7 @@ let props env spec =
             when names = [] || List.mem pr.Decl.pr_name.Ident.id_string names ->
               Decl.Spr.add pr acc
           | _ -> acc)
-        acc t.Theory.th_decls)
+        acc (decls env path th))
     Decl.Spr.empty spec
 
 let prune fam env =
@@ -114,7 +116,7 @@ let float_types env =
           match td.Theory.td_node with
           | Theory.Decl { Decl.d_node = Decl.Dtype ts } -> Ty.Sts.add ts acc
           | _ -> acc)
-        acc (Env.read_theory env [ "ieee_float" ] th).Theory.th_decls)
+        acc (decls env [ "ieee_float" ] th))
     Ty.Sts.empty [ "Float64"; "Float32"; "RoundingMode" ]
 
 (* WP's memory predicates (frama_c_wp/memory.mlw) *)
