@@ -3,9 +3,12 @@
 # Frama-C run of the proofs (proofs/job.sh, scripts/proof_teeth.sh,
 # scripts/smoke_teeth.sh):
 #   proofs/idle.ml   Frama-C's task loop without its 50 ms naps
-#   proofs/prune.ml  the Why3 transformations certbox_prune64, _prune32,
-#                    _prunew that the drivers of proofs/setup.sh name: the
-#                    axioms no goal needs, left out of each prover task
+#   proofs/prune.ml  the Why3 transformations that the drivers of
+#                    proofs/setup.sh name: certbox_prune64, _prune32,
+#                    _prunew (the axioms no goal needs), certbox_strip (the
+#                    float facts of a memory-access goal), certbox_relevant
+#                    and _relevant_wp (the axioms a goal cannot use), each
+#                    leaving hypotheses out of a prover task
 # They are compiled once per build tree (ocamlfind, against Frama-C's and
 # Why3's libraries: scripts/deps.sh proof installs ocaml-findlib), into
 # build/proof/certbox_wp.cmxs, and checked to load; the option is kept in

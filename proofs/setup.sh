@@ -16,7 +16,10 @@
 # hypothesis: a goal proved without it is proved with it (proofs/README.md,
 # trusted base).  The provers are about 40% faster on each goal without them.
 # Second, certbox_strip (the same file): a memory-access goal (\valid,
-# \separated, ...) without the declarations that name a float.
+# \separated, ...) without the declarations that name a float.  Last,
+# certbox_relevant (certbox_relevant_wp in the drivers of the unit with both
+# families' logic): the axioms the goal cannot use, left out (prune.ml says
+# which).
 # Driver paths in why3.conf are taken as written, so they are made absolute
 # here, at build time.  See proofs/README.md for why this setup is trusted.
 set -eu
@@ -29,9 +32,11 @@ for d in cvc4_real z3_real; do
   for fam in 64 32 w; do
     sed -e "s#@DATADIR@#$datadir#g" \
         -e "s#^transformation \"inline_trivial\"#transformation \"certbox_prune$fam\"\ntransformation \"certbox_strip\"\n&#" \
+        -e "s#^transformation \"encoding_smt_if_poly\"#&\ntransformation \"certbox_relevant$(test $fam = w && echo _wp)\"#" \
       "$here/$d.drv.in" > "$out/${d}$fam.drv"
     grep -q "^transformation \"certbox_prune$fam\"" "$out/${d}$fam.drv"
     grep -q "^transformation \"certbox_strip\"" "$out/${d}$fam.drv"
+    grep -A1 "^transformation \"encoding_smt_if_poly\"" "$out/${d}$fam.drv" | grep -q "^transformation \"certbox_relevant$(test $fam = w && echo _wp)\"$"
   done
 done
 cvc4=$(command -v cvc4)
