@@ -1,9 +1,10 @@
-(* certbox: what a prover task does not need, left out by two Why3
+(* certbox: what a prover task does not need, left out by Why3
    transformations (compiled and loaded into Frama-C with proofs/idle.ml by
-   proofs/plugin.sh; named first in the drivers that proofs/setup.sh
-   writes): certbox_prune64 / _prune32 / _prunew, the axioms no goal of a
-   family needs (this comment), and certbox_strip, the float facts a
-   memory-access goal does not need (below).
+   proofs/plugin.sh; named in the drivers that proofs/setup.sh writes):
+   first certbox_prune64 / _prune32 / _prunew, the axioms no goal of a
+   family needs (this comment); second certbox_strip, the float facts a
+   memory-access goal does not need; last certbox_relevant /
+   _relevant_wp, the axioms a goal cannot use (both below).
 
    Left out, every axiom (and lemma, which a task carries as an axiom) of:
    - bv.Pow2int, int.Power: the facts about integer powers of two
