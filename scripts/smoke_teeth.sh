@@ -46,7 +46,8 @@ case_() {
     fi
     return
   fi
-  (cd "$d" && frama-c $(teeth_incs "$d") "$tu" \
+  # every hypothesis in each task, as in the smoke jobs (proofs/job.sh)
+  (cd "$d" && CBX_WP_WHOLE_TASKS=1 frama-c $(teeth_incs "$d") "$tu" \
      -wp -wp-rte -wp-smoke-tests -wp-no-smoke-dead-call -wp-prover "cvc4r$fam" -wp-steps "$STEPS" -wp-smoke-timeout 30 \
      -wp-par 2 -wp-cache none $NOGOALS -wp-fct "$fct" > "$d/smoke.log" 2>&1) || true
   # WP prints [Passed] for a smoke test the prover could not refute (the
