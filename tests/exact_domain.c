@@ -88,22 +88,31 @@ int xu_is_empty(const cbx_box *in)
     return 0;
 }
 
-/* ldexp(1, k) for 0 <= k <= 1018 is an exact power of two, and comparing
- * fabs(v) (exact) with it is an exact comparison; an infinity is never
- * <= a finite bound, so non-finite inputs fall out by themselves. */
 int xu_severity(cbx_status s)
 {
     return s == CBX_EINVAL ? 3 : s == CBX_ERANGE ? 2 : s == CBX_EMPTY ? 1 : 0;
 }
 
+/* ldexp(1, k) for 0 <= k <= 1018 is an exact power of two, and comparing
+ * fabs(v) (exact) with it is an exact comparison; an infinity is never
+ * <= a finite bound, so non-finite inputs fall out by themselves.  The
+ * classes' bounds 2^k and 2^(rt - k) of the current format are computed
+ * once per format (the oracles ask for them millions of times). */
 int xu_pair_in_domain(double m, double c)
 {
+    static const xu_format *fmt;
+    static double bm[XU_NCLASS], bc[XU_NCLASS];
     int n;
     double am = fabs(m), ac = fabs(c);
-    for (n = 0; n < XU_NCLASS; n++) {
-        int k = xu_fmt->class_k[n];
-        if (am <= ldexp(1.0, k) && ac <= ldexp(1.0, xu_fmt->rt - k)) return 1;
+    if (fmt != xu_fmt) {
+        for (n = 0; n < XU_NCLASS; n++) {
+            bm[n] = ldexp(1.0, xu_fmt->class_k[n]);
+            bc[n] = ldexp(1.0, xu_fmt->rt - xu_fmt->class_k[n]);
+        }
+        fmt = xu_fmt;
     }
+    for (n = 0; n < XU_NCLASS; n++)
+        if (am <= bm[n] && ac <= bc[n]) return 1;
     return 0;
 }
 

@@ -148,6 +148,39 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
     sct_qm_clear(&r);
 }
 
+/* The exact world map of node n at the times tm (its ancestors' maps
+ * composed with its own: world[n] = world[parent] o map(n)), computed once
+ * per node and time sample: done[m] says world[m] holds this sample's map,
+ * inited[m] that it was initialised (cleared by the caller).  The same
+ * exact product as composing from the leaf's node up to the root
+ * (rational matrix products are associative), without recomposing the
+ * shared part of every leaf's path (2026-11-30: the deep generated scenes
+ * spent most of test_scene's time there). */
+static const qmap *world_map(const scene *s, int n, mpq_t *tm, qmap *world,
+                             char *done, char *inited, int *path, qmap *N)
+{
+    int top = 0;
+    for (int m = n; m >= 0 && !done[m]; m = s->nodes[m].parent)
+        path[top++] = m;
+    while (top > 0) {
+        int m = path[--top], p = s->nodes[m].parent;
+        if (!inited[m]) {
+            sct_qm_init(&world[m]);
+            inited[m] = 1;
+        }
+        node_map(s, m, tm[m], N);
+        if (p < 0) {
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 4; j++)
+                    mpq_set(world[m].m[i][j], N->m[i][j]);
+        } else {
+            sct_qm_compose(&world[m], &world[p], N);
+        }
+        done[m] = 1;
+    }
+    return &world[n];
+}
+
 static xu_rng rng = {88172645463325252u};
 static int collect_tightness = 1;   /* 0: generated scenes (no tightness figure) */
 
@@ -164,8 +197,15 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
     int ntimes = has_motion ? 13 : 1;
     mpq_t *tm = malloc((size_t)(s.nn > 0 ? s.nn : 1) * sizeof *tm);
     for (int n = 0; n < s.nn; n++) mpq_init(tm[n]);
-    qmap W, N, R;
-    sct_qm_init(&W); sct_qm_init(&N); sct_qm_init(&R);
+    size_t nn = (size_t)(s.nn > 0 ? s.nn : 1);
+    qmap *world = malloc(nn * sizeof *world), N;
+    char *done = calloc(nn, 1), *inited = calloc(nn, 1);
+    int *path = malloc(nn * sizeof *path);
+    if (!world || !done || !inited || !path) {
+        fprintf(stderr, "FAIL %s: out of memory\n", file);
+        exit(1);
+    }
+    sct_qm_init(&N);
     for (int k = 0; k < ntimes; k++) {
         for (int n = 0; n < s.nn; n++) {
             if (k < 5) mpq_set_si(tm[n], num[k], (unsigned long)den[k]);
@@ -173,27 +213,20 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
             mpq_canonicalize(tm[n]);
         }
         (*times_total)++;
+        memset(done, 0, nn);
         for (int l = 0; l < s.nl; l++) {
             const sc_leaf *L = &s.leaves[l];
-            if (l > 0 && L->node == s.leaves[l - 1].node) {    /* the same exact map */
-                check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
-                continue;
-            }
-            sct_qm_ident(&W);
-            for (int n = L->node; n >= 0; n = s.nodes[n].parent) {   /* W = N o W */
-                node_map(&s, n, tm[n], &N);
-                sct_qm_compose(&R, &N, &W);
-                for (int i = 0; i < 3; i++)
-                    for (int j = 0; j < 4; j++)
-                        mpq_set(W.m[i][j], R.m[i][j]);
-            }
-            check_leaf(L, &W, st, file, collect_tightness && k == 0 && !has_motion);
+            check_leaf(L, world_map(&s, L->node, tm, world, done, inited, path, &N),
+                       st, file, collect_tightness && k == 0 && !has_motion);
         }
     }
     st->leaves += s.nl;
     for (int n = 0; n < s.nn; n++) mpq_clear(tm[n]);
     free(tm);
-    sct_qm_clear(&W); sct_qm_clear(&N); sct_qm_clear(&R);
+    for (int n = 0; n < s.nn; n++)
+        if (inited[n]) sct_qm_clear(&world[n]);
+    free(world); free(done); free(inited); free(path);
+    sct_qm_clear(&N);
     /* every leaf proven, and the scene box the union */
     int bad = 0;
     for (int l = 0; l < s.nl; l++) {
