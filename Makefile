@@ -293,7 +293,8 @@ proof-report:
 .PHONY: evidence evidence-check
 # Both reuse the logs of the last proof run only if it proved these very
 # sources (proofs/inputs.sh); otherwise they run the proofs first (a fresh
-# clone: 20 to 50 minutes on 2 cores, by machine: docs/measurements.md).
+# clone: about 18 minutes on 2 cores on 2026-11-30, more on slower
+# machines: docs/measurements.md).
 PROOF_CURRENT = @{ sh proofs/inputs.sh --check && ! grep -q 'from a kept WP cache' $(B)/proof/report.md; } || { echo "evidence: no from-scratch proof run of these sources in $(B)/proof: running the proofs first"; $(MAKE) proof-check; }
 evidence: all
 	@sh scripts/deps.sh evidence
