@@ -109,15 +109,9 @@ TESTUTIL := $(shell sh scripts/testutil.sh)
 TESTHDR  := $(sort $(wildcard tests/*.h))
 TU       := $(B)/libtestutil.a
 SANTU    := $(B)/san/libtestutil.a
-# GMP and MPFR linked statically into the tests where their archives are
-# there (Debian's libgmp-dev, libmpfr-dev): MPFR's thread-local state is
-# then read without a call to __tls_get_addr (measured 2026-11-30:
-# test_trs 19% less CPU, test_project 8%, test_classes 3%; the same
-# output), dynamically otherwise
-STATIC_EXACT := $(and $(wildcard $(shell $(CC) -print-file-name=libmpfr.a)),$(wildcard $(shell $(CC) -print-file-name=libgmp.a)))
-LD_STATIC := -Wl,-Bstatic
-LD_DYNAMIC := -Wl,-Bdynamic
-EXACTLIBS := $(if $(STATIC_EXACT),$(LD_STATIC) -lmpfr -lgmp $(LD_DYNAMIC),-lmpfr -lgmp)
+# GMP and MPFR: static where their archives are there (scripts/exactlibs.sh
+# says why; scripts/evidence.py links the same way)
+EXACTLIBS := $(shell sh scripts/exactlibs.sh $(CC))
 $(B)/tu/%.o: tests/%.c $(TESTHDR) $(HEADERS)
 	@mkdir -p $(@D)
 	$(CC) $(ALLCFLAGS) -Itests -c $< -o $@

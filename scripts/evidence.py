@@ -74,14 +74,8 @@ SUITES = [
     # assimp-testmodels and tests/data/gltf; it runs the tool build/certbox
     ('gltf', ['/usr/share/assimp/models/glTF2', 'tests/data/gltf', 'build/certbox', '20000']),
 ]
-# GMP and MPFR linked statically where their archives are there, as the
-# Makefile's tests are (EXACTLIBS there: MPFR's thread-local state read
-# without a call)
-def _archive(name):
-    f = subprocess.run([CC, '-print-file-name=' + name], capture_output=True, text=True).stdout.strip()
-    return os.path.isabs(f) and os.path.exists(f)
-EXACTLIBS = (['-Wl,-Bstatic', '-lmpfr', '-lgmp', '-Wl,-Bdynamic']
-             if _archive('libmpfr.a') and _archive('libgmp.a') else ['-lmpfr', '-lgmp'])
+# GMP and MPFR linked as the Makefile's tests are (scripts/exactlibs.sh)
+EXACTLIBS = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'exactlibs.sh'), CC], text=True).split()
 # test_gltf needs jansson (the tool's optional dependency; scripts/deps.sh
 # test installs it): without it the suite is not run and the pack fails
 HAVE_JANSSON = subprocess.run(['pkg-config', '--exists', 'jansson']).returncode == 0

@@ -150,30 +150,23 @@ static void node_map(const scene *s, int n, const mpq_t tm, qmap *out)
 
 /* The exact world map of node n at the times tm (its ancestors' maps
  * composed with its own: world[n] = world[parent] o map(n)), computed once
- * per node and time sample: done[m] says world[m] holds this sample's map,
- * inited[m] that it was initialised (cleared by the caller).  The same
- * exact product as composing from the leaf's node up to the root
+ * per node and time sample (done[m]: world[m] holds this sample's map).
+ * The same exact product as composing from the leaf's node up to the root
  * (rational matrix products are associative), without recomposing the
  * shared part of every leaf's path (2026-11-30: the deep generated scenes
  * spent most of test_scene's time there). */
 static const qmap *world_map(const scene *s, int n, mpq_t *tm, qmap *world,
-                             char *done, char *inited, int *path, qmap *N)
+                             char *done, int *path, qmap *N)
 {
     int top = 0;
     for (int m = n; m >= 0 && !done[m]; m = s->nodes[m].parent)
         path[top++] = m;
     while (top > 0) {
         int m = path[--top], p = s->nodes[m].parent;
-        if (!inited[m]) {
-            sct_qm_init(&world[m]);
-            inited[m] = 1;
-        }
-        node_map(s, m, tm[m], N);
         if (p < 0) {
-            for (int i = 0; i < 3; i++)
-                for (int j = 0; j < 4; j++)
-                    mpq_set(world[m].m[i][j], N->m[i][j]);
+            node_map(s, m, tm[m], &world[m]);
         } else {
+            node_map(s, m, tm[m], N);
             sct_qm_compose(&world[m], &world[p], N);
         }
         done[m] = 1;
@@ -199,12 +192,13 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
     for (int n = 0; n < s.nn; n++) mpq_init(tm[n]);
     size_t nn = (size_t)(s.nn > 0 ? s.nn : 1);
     qmap *world = malloc(nn * sizeof *world), N;
-    char *done = calloc(nn, 1), *inited = calloc(nn, 1);
+    char *done = malloc(nn);
     int *path = malloc(nn * sizeof *path);
-    if (!world || !done || !inited || !path) {
+    if (!world || !done || !path) {
         fprintf(stderr, "FAIL %s: out of memory\n", file);
         exit(1);
     }
+    for (int n = 0; n < s.nn; n++) sct_qm_init(&world[n]);
     sct_qm_init(&N);
     for (int k = 0; k < ntimes; k++) {
         for (int n = 0; n < s.nn; n++) {
@@ -216,16 +210,15 @@ static int check_scene(scene *sp, const char *file, stats *st, long *times_total
         memset(done, 0, nn);
         for (int l = 0; l < s.nl; l++) {
             const sc_leaf *L = &s.leaves[l];
-            check_leaf(L, world_map(&s, L->node, tm, world, done, inited, path, &N),
+            check_leaf(L, world_map(&s, L->node, tm, world, done, path, &N),
                        st, file, collect_tightness && k == 0 && !has_motion);
         }
     }
     st->leaves += s.nl;
     for (int n = 0; n < s.nn; n++) mpq_clear(tm[n]);
     free(tm);
-    for (int n = 0; n < s.nn; n++)
-        if (inited[n]) sct_qm_clear(&world[n]);
-    free(world); free(done); free(inited); free(path);
+    for (int n = 0; n < s.nn; n++) sct_qm_clear(&world[n]);
+    free(world); free(done); free(path);
     sct_qm_clear(&N);
     /* every leaf proven, and the scene box the union */
     int bad = 0;
