@@ -115,7 +115,13 @@ static int front_sign(const mpq_t B, const mpq_t qbb)
 
 /* B - m <= eps S + 2^-1000 + sc 2^-520 + eps m, eps = 2^-40, m = |M^T b|
  * (the ball's |r| |b|), S = W(c)'s magnitude, sc the shape's scale
- * (shape_scale): with B > 0, squared. */
+ * (shape_scale): with B > 0, squared.  For the ellipsoid S also holds the
+ * magnitude of M^T b's terms, sum_j |s_j| sum_i |rot_ij| |b_i|: M^T b is
+ * enclosed from its terms, so it is known to within a few units of their
+ * magnitude, not of m itself, which they can cancel to 0 (the fuzz input of
+ * 2026-12-01: rot's second column (3, 3, 3), b = (-1, 0.5, 0.5), W = 2^-300
+ * on the whole segment, CBX_EBEHIND; the contract allows it: the enclosure
+ * of min W is not above 0). */
 static int near_plane(const mpq_t B, const mpq_t qbb)
 {
     mpq_t t, u, e, S;
@@ -130,6 +136,17 @@ static int near_plane(const mpq_t B, const mpq_t qbb)
         mpq_set_d(u, fabs(C[j]));
         mpq_mul(t, t, u);
         mpq_add(S, S, t);
+    }
+    for (j = 0; ELL && j < 3; j++) {
+        int i;
+        for (i = 0; i < 3; i++) {
+            mpq_set_d(t, fabs(ROT[i][j]));
+            mpq_set_d(u, fabs(P[3][i]));
+            mpq_mul(t, t, u);
+            mpq_set_d(u, fabs(RAD[j]));
+            mpq_mul(t, t, u);
+            mpq_add(S, S, t);
+        }
     }
     mpq_set_ui(e, 1, 1);
     mpq_div_2exp(e, e, 40);
@@ -408,7 +425,7 @@ static void judge(cbx_status st, const cbx_box *out, pso_stats *s, void (*fail)(
     if (front_sign(B, bb) <= 0)
         check(st == CBX_EBEHIND, "a ball touching, crossing or behind the camera plane -> CBX_EBEHIND");
     if (st == CBX_EBEHIND)
-        check(near_plane(B, bb), "CBX_EBEHIND only for a ball near the camera plane: W(c) - |r| |b| <= 2^-40 (S_W + |r| |b|) + 2^-1000 + |r| 2^-520");
+        check(near_plane(B, bb), "CBX_EBEHIND only for a ball near the camera plane: W(c) - |r| |b| <= 2^-40 (S_W + |r| |b|) + 2^-1000 + |r| 2^-520 (an ellipsoid: S_W with the terms of M^T b)");
     if (st == CBX_ERANGE) { /* in the domain: how far from the camera plane (shown) */
         double b = mpq_get_d(B), m = sqrt(mpq_get_d(bb)), f = (b - m) / (b + m);
         s->erange++;

@@ -212,6 +212,18 @@ static void own_hard(void)
         RAD[0] = 4; RAD[1] = 0.5; RAD[2] = 2;
         run_case("scaled camera");
     }
+    /* a segment parallel to the camera plane, 2^-300 in front of it, whose
+     * W-gradient terms cancel exactly (-3 + 1.5 + 1.5): enclosed from its
+     * terms, min W is not shown positive, so CBX_EBEHIND, as the contract
+     * allows (found by fuzz_pell, 2026-12-01: the oracle's "near the camera
+     * plane" measure now counts those terms, tests/psph_oracle.c) */
+    tc_identity_camera(P);
+    P[3][0] = -1; P[3][1] = 0.5; P[3][2] = 0.5; P[3][3] = 0x1p-300;
+    C[0] = C[1] = C[2] = 0;
+    tc_identity3(ROT);
+    ROT[0][1] = ROT[1][1] = ROT[2][1] = 3;
+    RAD[0] = 0; RAD[1] = 1; RAD[2] = 0;
+    run_case("segment along the camera plane, cancelling");
 }
 
 int main(int argc, char **argv)
