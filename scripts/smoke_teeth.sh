@@ -12,7 +12,7 @@
 set -u
 . scripts/teeth_copy.sh
 teeth_setup smoke-teeth
-STEPS=${CBX_SMOKE_STEPS:-60000}
+STEPS=${CBX_SMOKE_STEPS:-40000}
 # the smoke options of proofs/job.sh (dead-call tests off), in the functions
 # its smoke jobs test (see there)
 NOGOALS="-wp-prop=-@lemma,-@requires,-@assigns,-@ensures,-@exits,-@assert,-@invariant,-@variant,-@breaks,-@continues,-@returns,-@complete_behaviors,-@disjoint_behaviors,-@terminates,-@decreases,-@check"
