@@ -64,8 +64,9 @@ FLAGS = ['-std=c99', '-Wall', '-Wextra', '-Wpedantic', '-Werror', '-ffp-contract
 # minutes, seven halved (batch, classes, project, trs, pnear, pball, pell:
 # a pack 100 s instead of 115 s); pwide halved left a branch of
 # src/f64/cbx_psph.c untaken, so it stays.  Each runs twice: the library
-# as built (-O2) for the figures, and a -O0 --coverage build for coverage, whose output must be the
-# same line for line.  test_ieee runs in every mode it has.
+# as built (-O2) for the figures, and a -O0 --coverage build for coverage,
+# whose output must be the same line for line.  test_ieee runs in every
+# mode it has.
 SUITES = [
     ('badinput', []), ('special', []), ('exact', ['100000', '1']), ('cbox', ['30000', '1']),
     ('sphere', ['20000', '1']), ('alias', ['10000', '1']), ('halfspace', ['20', '1']),

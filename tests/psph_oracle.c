@@ -129,7 +129,8 @@ static int near_plane(const mpq_t B, const mpq_t qbb)
     if (mpq_sgn(B) <= 0)
         return 1;
     mpq_inits(t, u, e, S, NULL);
-    /* S = |b0 c0| + |b1 c1| + |b2 c2| + |b3|: W(c)'s magnitude */
+    /* S = |b0 c0| + |b1 c1| + |b2 c2| + |b3|: W(c)'s magnitude (then, for
+     * an ellipsoid, the magnitude of M^T b's terms: see above) */
     mpq_set_d(S, fabs(P[3][3]));
     for (j = 0; j < 3; j++) {
         mpq_set_d(t, fabs(P[3][j]));
