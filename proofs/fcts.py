@@ -5,6 +5,8 @@
                                         a comma list of function names
     python3 proofs/fcts.py TU --callers NAME
                                         the functions of TU that call NAME
+    python3 proofs/fcts.py TU --lemmas z3 [FILE...]
+                                        a comma list of lemma names
 
 TU is a proof translation unit (proofs/all.c, all_f.c, imat.c, proj.c,
 proj_f.c, trs.c, psph.c, pnear.c, pball.c, pwide.c, pell.c).  It is
@@ -67,6 +69,13 @@ part of a group (proofs/job.sh, SMOKE, says why):
 
 The rest of a unit (the algorithms of src/algo/*.c) is what a job's
 -wp-skip-fct of these groups leaves.
+
+--lemmas z3 lists the lemmas of the unit (of the FILEs only, if given)
+marked for Z3: the line before the lemma reads // proof: z3 (inside the
+annotation; a lemma that Z3 proves at once and CVC4 slowly or not at all).
+The lemma jobs give these to Z3 and the rest to CVC4 (proofs/job.sh), each
+lemma to one prover.  The names are WP's: in the binary32 family, after the
+renaming of include/cbx_names_f.h (disk_plain_f for disk_plain).
 """
 import os
 import re
@@ -207,7 +216,45 @@ def group(defs, g):
     sys.exit('fcts.py: unknown group %s' % g)
 
 
+Z3MARK = '// proof: z3'
+LEMMA = re.compile(r'^\s*lemma\s+([A-Za-z_]\w*)\s*:')
+
+
+def z3_lemmas(tu, files):
+    """the WP names of the lemmas marked Z3MARK in the unit (in FILEs, if
+    any), in the order of the unit"""
+    incs = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
+    text = subprocess.check_output(['gcc', '-E', '-C', '-dD', '-D__FRAMAC__'] + incs + ['-Ispecs', tu],
+                                   cwd=ROOT, text=True)
+    # the renamings the unit defines (#define NAME NAME_f): Frama-C expands
+    # them in annotations, gcc -E does not
+    ren = dict(re.findall(r'^#define ([A-Za-z_]\w*) ([A-Za-z_]\w*)\s*$', text, re.M))
+    want = {os.path.normpath(f) for f in files}
+    cur, marked, out = None, False, []
+    for ln in text.split('\n'):
+        m = re.match(r'# \d+ "([^"]+)"', ln)
+        if m:
+            cur = os.path.normpath(m.group(1))
+            continue
+        if ln.strip() == Z3MARK:
+            marked = True
+            continue
+        m = LEMMA.match(ln)
+        if m:
+            name = m.group(1)
+            for _ in range(4):
+                name = ren.get(name, name)
+            if marked and (not want or cur in want) and name not in out:
+                out.append(name)
+        if ln.strip():
+            marked = False
+    return out
+
+
 def main():
+    if len(sys.argv) >= 4 and sys.argv[2] == '--lemmas' and sys.argv[3] == 'z3':
+        print(','.join(z3_lemmas(sys.argv[1], sys.argv[4:])))
+        return
     if len(sys.argv) == 4 and sys.argv[2] == '--callers':
         calls = callees(preprocess(sys.argv[1]))
         print(','.join(n for n, c in calls.items() if sys.argv[3] in c))

@@ -159,7 +159,10 @@ case $name in
   SP64|SP32) TU=proofs/proj$(test $fam = 64 || echo _f).c; OPTS="$SMOKE $NOGOALS"; SG=proj,projsplit ;;
   L64) TU=proofs/lemmas.c; OPTS=$WP; SEL="" ;;
   LP64) TU=proofs/lemmas_p.c; OPTS=$WP
-    SEL="-wp-prop $(grep -ho 'lemma [a-z0-9_]*:' specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h specs/cbx_pwide.h specs/cbx_pell.h | sed 's/lemma //; s/://' | paste -sd, -)" ;;
+    LFILES="specs/cbx_psph.h specs/cbx_pnear.h specs/cbx_pball.h specs/cbx_pwide.h specs/cbx_pell.h"
+    # shellcheck disable=SC2086
+    LIST=$(grep -ho 'lemma [a-z0-9_]*:' $LFILES | sed 's/lemma //; s/://' | paste -sd, -)
+    SEL="-wp-prop $LIST" ;;
   L32) TU=proofs/lemmas_f.c; OPTS=$WP; SEL="" ;;
   BS64|BS32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP $BALL"; SEL="-wp-fct $(fcts $TU ball)" ;;
   BSA64|BSA32) TU=proofs/all$(test $fam = 64 || echo _f).c; OPTS="$WP -wp-split $BALL"; SEL="-wp-fct $(fcts $TU ballsplit)" ;;
@@ -198,15 +201,42 @@ case $name in
     else
       CACHE="-wp-cache none"
     fi
-    # The lemma jobs (and PSR64) race both provers from pass 1: Z3 proves lagrange and
-    # irow_in_terms in under 0.1 s where CVC4 times out, and a lemma job's
-    # pass 2 regenerates every lemma (measured at 492e631: L64 54 s, L32
-    # 40 s, each with that 20 s timeout and a second pass).
+    # PSR64 races both provers from pass 1 (its functions are marked
+    # /* proof: race */).  The lemma jobs give each lemma to one prover in
+    # pass 1: Z3 the lemmas marked // proof: z3 in specs/ (proofs/fcts.py
+    # --lemmas z3: lagrange, irow_in_terms, ... which Z3 proves in under
+    # 0.1 s where CVC4 times out), CVC4 the others, in two Frama-C runs
+    # whose logs follow each other.  Until 2026-12-01 both provers raced on
+    # every lemma, so each lemma cost both provers' time until the first
+    # answer: L64 alone took 117 s of CPU raced, 57 s split (68.6 s and
+    # 32.5 s of wall time; 141 of 141 lemmas both ways).  A lemma left
+    # unproved goes to pass 2 (every lemma of the job, raced), as before.
     P1=cvc4r$fam
-    case $name in L*|PSR64) P1=cvc4r$fam,z3r$fam ;; esac
-    # shellcheck disable=SC2086
-    $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
-      > $out/wp-$name.log 2>&1 || true
+    case $name in PSR64) P1=cvc4r$fam,z3r$fam ;; esac
+    case $name in
+      L*)
+        # shellcheck disable=SC2086
+        z=$(fcts $TU --lemmas z3 ${LFILES:-})
+        if [ -z "${LIST:-}" ]; then
+          c=${z:+-wp-prop=-$(echo "$z" | sed 's/,/,-/g')}
+        else
+          c=$(echo "$LIST" | tr , '\n' | awk -v z=",$z," 'index(z, "," $0 ",") == 0' | paste -sd, -)
+          c=${c:+-wp-prop=$c}
+          z=$(echo "$z" | tr , '\n' | awk -v l=",$LIST," 'index(l, "," $0 ",") > 0' | paste -sd, -)
+        fi
+        # shellcheck disable=SC2086
+        $FC $TU $OPTS $c -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
+          > $out/wp-$name.log 2>&1 || true
+        if [ -n "$z" ]; then
+          # shellcheck disable=SC2086
+          $FC $TU $OPTS -wp-prop=$z -wp-prover z3r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
+            >> $out/wp-$name.log 2>&1 || true
+        fi ;;
+      *)
+        # shellcheck disable=SC2086
+        $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
+          > $out/wp-$name.log 2>&1 || true ;;
+    esac
     again=$(python3 proofs/report.py --unproved-functions $out/wp-$name.log)
     if [ -n "$again" ]; then
       echo "proof: job $name: pass 2 on $again"

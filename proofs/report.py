@@ -102,7 +102,9 @@ def collect(outdir):
             if not st:
                 unfinished.append(name)
         else:
-            if not re.search(r'Proved goals:\s+\d+ / \d+', text):
+            # every Frama-C run of the job finished (a lemma job runs two
+            # in pass 1, one per prover: proofs/job.sh)
+            if len(re.findall(r'Proved goals:\s+\d+ / \d+', text)) < max(1, text.count('[wp] Running WP plugin')):
                 unfinished.append(name)
             # a goal's last result counts (a job may run two passes)
             last = {}

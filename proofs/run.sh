@@ -42,10 +42,11 @@ NPROC=$(nproc 2>/dev/null || echo 2)
 JOBS=${CBX_JOBS:-$NPROC}
 export CBX_JOBS=$JOBS   # for the report
 export CBX_WP_PAR="${CBX_WP_PAR:-$NPROC}"
-# longest first (the wall times, three jobs at a time, of the clean-clone
-# run of 509e75c, 2026-11-30: PW took 357 s there, started last), so that
-# the pool ends evenly with the short smoke jobs
-LIST="B64a T64 PW PB64 L64 PE64 PN64 PA64 PA32 B64b B32 S64 K64 K32 A64 P64 P32 I64 BS64 S32 A32 PS64 BS32 SPW LP64 L32 SPS64 ST64 BSA64 BSA32 PSR64 SP32 SP64 SPN64 SPB64 SPE64 SI64"
+# longest first (the wall times, two jobs at a time, of the clean-clone
+# run of 4e0c9fc, 2026-12-01, the lemma jobs placed by their times since
+# each lemma goes to one prover), so that the pool ends evenly with the
+# short smoke jobs
+LIST="B64a T64 PW PB64 PE64 PA64 PN64 PA32 S64 B64b B32 K64 K32 A64 I64 PS64 BS32 BS64 P32 S32 A32 L64 P64 SPW LP64 ST64 SPS64 L32 BSA64 BSA32 PSR64 SP32 SP64 SPE64 SPN64 SPB64 SI64"
 echo "proof: $(echo $LIST | wc -w) jobs, $JOBS at a time, $CBX_WP_PAR prover processes each"
 start=$(date +%s)
 # a failed job shows in the report (RESULT: NOT PROVED), not here

@@ -61,6 +61,7 @@
     // Cauchy-Schwarz in 3 dimensions, via Lagrange's identity; each step is
     // a separate lemma whose terms (dot3, nrm3) trigger the previous one.
     lemma nrm3_pos: \forall real a0, a1, a2; nrm3(a0, a1, a2) >= 0;
+    // proof: z3
     lemma lagrange: \forall real m0, m1, m2, p0, p1, p2;
       nrm3(m0, m1, m2) * nrm3(p0, p1, p2)
         - dot3(m0, m1, m2, p0, p1, p2) * dot3(m0, m1, m2, p0, p1, p2)
@@ -119,6 +120,7 @@
       \abs(a0) * \abs(a0) == a0 * a0 ==> \abs(a1) * \abs(a1) == a1 * a1 ==>
       \abs(a2) * \abs(a2) == a2 * a2 ==>
       nrm3(\abs(a0), \abs(a1), \abs(a2)) == nrm3(a0, a1, a2);
+    // proof: z3
     lemma nrm3_abs: \forall real a0, a1, a2;
       nrm3(\abs(a0), \abs(a1), \abs(a2)) == nrm3(a0, a1, a2);
     // Entrywise squares summed.

@@ -190,10 +190,12 @@
 /*@ // r below (above) both ends is below (above) every point between.
     lemma lerp_below: \forall real r, x, y, s;
       0 <= s <= 1 ==> r <= x ==> r <= y ==> between_lo(r, x, y, s);
+    // proof: z3
     lemma lerp_above: \forall real r, x, y, s;
       0 <= s <= 1 ==> r >= x ==> r >= y ==> between_hi(r, x, y, s);
 
     // Row M(s) at p is the interpolation of the two ends' values at p.
+    // proof: z3
     lemma mrow_split: \forall real s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2;
       mrow(s, m0, m1, m2, t, n0, n1, n2, u, p0, p1, p2)
         == lerp(s, m0*p0 + m1*p1 + m2*p2 + t, n0*p0 + n1*p1 + n2*p2 + u);

@@ -75,6 +75,7 @@
     lemma itsel_mag: \forall integer up, real ml, mh, l, h;
       -itmag(ml, mh, l, h) <= itsel(up, ml, mh, l, h) <= itmag(ml, mh, l, h);
     lemma iterm_all: \forall real ml, mh, l, h; iterm_holds(ml, mh, l, h);
+    // proof: z3
     lemma irow_in_terms: \forall real lo, hi, ml0, mh0, ml1, mh1, ml2, mh2, tl, th,
                                       l0, h0, l1, h1, l2, h2;
       iterm_holds(ml0, mh0, l0, h0) && iterm_holds(ml1, mh1, l1, h1) && iterm_holds(ml2, mh2, l2, h2)

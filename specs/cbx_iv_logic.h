@@ -108,7 +108,9 @@
     lemma iv_sq_ends: \forall real lo, hi, l, h;
       lo <= sqmin(l, h) && sqmax(l, h) <= hi ==> iv_sq(lo, hi, l, h);
     lemma sqp_all: \forall real y; sqp(y);
+    // proof: z3
     lemma sqm_all: \forall real y, z; sqm(y, z);
+    // proof: z3
     lemma sql_all: \forall real y, z; sql(y, z);
     lemma iv_root_ends: \forall real lo, hi, l, h;
       (lo <= 0 || lo*lo <= l) && 0 <= hi && h <= hi*hi ==> iv_root(lo, hi, l, h);
@@ -140,6 +142,7 @@
     lemma quot_sc: \forall real lo, hi, al, ah, bl, bh, x, k;
       iv_quot(lo, hi, al, ah, bl, bh) && sc_has(al, ah, x, k) && bl <= k <= bh && 0 < bl ==> lo <= x <= hi;
     // one point of a square root's enclosure (as ps_root_at, specs/cbx_psph.h)
+    // proof: z3
     lemma iv_root_at: \forall real lo, hi, l, h, y;
       iv_root(lo, hi, l, h) && 0 <= y && sq_at(l, h, y) ==> lo <= y <= hi;
 */

@@ -97,6 +97,7 @@
     // why).
 
     // X - s W at c + r q is pb_v.
+    // proof: z3
     lemma pb_v_e: \forall real s, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       pb_v(s, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2)
       == aff(a0, a1, a2, a3, c0 + r*q0, c1 + r*q1, c2 + r*q2)
@@ -106,6 +107,7 @@
       == ps_e(s, a0, a1, a2, a3, b0, b1, b2, b3, c0 + r*q0, c1 + r*q1, c2 + r*q2);
     // The certificate at one point of the ball, from the Cauchy-Schwarz
     // instance there (ps_sc), then from q in the ball.
+    // proof: z3
     lemma pb_le_sc: \forall real f, s, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       ps_sc(r, dot3(a0 - s*b0, a1 - s*b1, a2 - s*b2, q0, q1, q2), rnorm3(a0 - s*b0, a1 - s*b1, a2 - s*b2))
       ==> pb_le(f, s, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)

@@ -156,6 +156,7 @@
 #ifdef CBX_PELL_LEMMAS
 /*@ // X at the point c + M q is A + a'.q: the ellipsoid's point of q is
     // the ball's point q in the ellipsoid's frame.
+    // proof: z3
     lemma pe_aff: \forall real a0, a1, a2, a3, c0, c1, c2, r00, r01, r02, r10, r11, r12,
                           r20, r21, r22, s0, s1, s2, q0, q1, q2;
       aff(a0, a1, a2, a3, pe_pt(c0, r00, r01, r02, s0, s1, s2, q0, q1, q2),
@@ -164,6 +165,7 @@
              pe_x(r02, r12, r22, s2, a0, a1, a2), aff(a0, a1, a2, a3, c0, c1, c2),
              0 + 1*q0, 0 + 1*q1, 0 + 1*q2);
     // The three inequalities at one point, from the ball's in the frame.
+    // proof: z3
     lemma pe_at_ps: \forall real lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
                             r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2, q0, q1, q2;
       ps_xw(pe_x(r00, r10, r20, s0, b0, b1, b2), pe_x(r01, r11, r21, s1, b0, b1, b2),
@@ -212,6 +214,7 @@
                            r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2;
       pe_e(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2)
       == ps_e(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2);
+    // proof: z3
     lemma pe_n_eq: \forall real t, a0, a1, a2, b0, b1, b2,
                            r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2;
       pe_n(t, a0, a1, a2, b0, b1, b2, r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2)

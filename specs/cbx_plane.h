@@ -118,6 +118,7 @@
 /*@
     lemma ball_disk: \forall real lo, hi, b0, b1, t;
       ball_axis(lo, hi, b0, b1, 0, t) ==> disk_cover(lo, hi, b0, b1, t);
+    // proof: z3
     lemma disk_plain: \forall real lo, hi, b0, b1, t, p0, p1;
       disk_cover(lo, hi, b0, b1, t) ==> p0*p0 + p1*p1 <= 1 ==> lo <= b0*p0 + b1*p1 + t <= hi;
 */

@@ -131,6 +131,7 @@
       pn_box(l0, h0, l1, h1, l2, h2, x0, x1, x2)
       ==> aff(k0, k1, k2, k3, x0, x1, x2) <= pn_mx(k0, l0, h0) + pn_mx(k1, l1, h1) + pn_mx(k2, l2, h2) + k3;
     // X - s W at a point is X - s W.
+    // proof: z3
     lemma pn_e: \forall real s, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2;
       ps_e(s, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2)
       == aff(a0, a1, a2, a3, x0, x1, x2) - s * aff(b0, b1, b2, b3, x0, x1, x2);
@@ -141,6 +142,7 @@
       s <= t ==> wn <= aff(b0, b1, b2, b3, x0, x1, x2)
       ==> pn_lw(s, t, wn) <= (t - s)*aff(b0, b1, b2, b3, x0, x1, x2);
     // The certificate at one point: X - s W <= (t - s) wn <= (t - s) W.
+    // proof: z3
     lemma pn_xhi_pt: \forall real s, t, wn, a0, a1, a2, a3, b0, b1, b2, b3, x0, x1, x2;
       aff(a0 - s*b0, a1 - s*b1, a2 - s*b2, a3 - s*b3, x0, x1, x2) <= pn_lw(s, t, wn)
       ==> pn_lw(s, t, wn) <= (t - s)*aff(b0, b1, b2, b3, x0, x1, x2)

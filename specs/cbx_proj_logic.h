@@ -97,9 +97,11 @@
     lemma aff_pmag: \forall real m0, m1, m2, t, x, y, z;
       \abs(aff(m0, m1, m2, t, x, y, z)) <= pmag(m0, m1, m2, t, x, y, z);
 
+    // proof: z3
     lemma plo_aff: \forall real lo, m0, m1, m2, t, w0, w1, w2, wt, x, y, z;
       plo(lo, m0, m1, m2, t, w0, w1, w2, wt, x, y, z)
       <==> aff(m0 - lo*w0, m1 - lo*w1, m2 - lo*w2, t - lo*wt, x, y, z) >= 0;
+    // proof: z3
     lemma phi_aff: \forall real hi, m0, m1, m2, t, w0, w1, w2, wt, x, y, z;
       phi(hi, m0, m1, m2, t, w0, w1, w2, wt, x, y, z)
       <==> aff(hi*w0 - m0, hi*w1 - m1, hi*w2 - m2, hi*wt - t, x, y, z) >= 0;

@@ -128,11 +128,13 @@
 
 #ifdef CBX_PSPH_LEMMAS
 /*@ // X - t W at c + r q: its value at the center plus r k(t).q.
+    // proof: z3
     lemma ps_split: \forall real t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       aff(a0, a1, a2, a3, c0 + r*q0, c1 + r*q1, c2 + r*q2)
         - t * aff(b0, b1, b2, b3, c0 + r*q0, c1 + r*q1, c2 + r*q2)
       == ps_e(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2)
          + r * dot3(a0 - t*b0, a1 - t*b1, a2 - t*b2, q0, q1, q2);
+    // proof: z3
     lemma ps_split1: \forall real b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       aff(b0, b1, b2, b3, c0 + r*q0, c1 + r*q1, c2 + r*q2)
       == aff(b0, b1, b2, b3, c0, c1, c2) + r * dot3(b0, b1, b2, q0, q1, q2);
@@ -149,14 +151,17 @@
       in_ball(q0, q1, q2) ==> ps_sc(r, dot3(k0, k1, k2, q0, q1, q2), rnorm3(k0, k1, k2));
     // The three inequalities at one point q of the ball, first from the
     // Cauchy-Schwarz instance at q (ps_sc), then from q in the ball.
+    // proof: z3
     lemma ps_xhi_sc: \forall real t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       ps_sc(r, dot3(a0 - t*b0, a1 - t*b1, a2 - t*b2, q0, q1, q2), rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2))
       ==> ps_hi(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
       ==> ps_xhi(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2);
+    // proof: z3
     lemma ps_xlo_sc: \forall real t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       ps_sc(r, dot3(a0 - t*b0, a1 - t*b1, a2 - t*b2, q0, q1, q2), rnorm3(a0 - t*b0, a1 - t*b1, a2 - t*b2))
       ==> ps_lo(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
       ==> ps_xlo(t, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2);
+    // proof: z3
     lemma ps_xw_sc: \forall real b0, b1, b2, b3, c0, c1, c2, r, q0, q1, q2;
       ps_sc(r, dot3(b0, b1, b2, q0, q1, q2), rnorm3(b0, b1, b2))
       ==> ps_front(b0, b1, b2, b3, c0, c1, c2, r)
@@ -182,6 +187,7 @@
       ==> sl <= lo + ps_tau(lo) ==> ps_below(sl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)
       ==> ps_tight(lo, hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     // One point of a square root's enclosure (iv_root, specs/cbx_iv_logic.h).
+    // proof: z3
     lemma ps_root_at: \forall real lo, hi, l, h, y;
       iv_root(lo, hi, l, h) ==> 0 <= y ==> sq_at(l, h, y) ==> iv_has(lo, hi, y);
     // Bounds of products (the ranges of src/f64/cbx_psph.c).

@@ -98,9 +98,11 @@
       && msign(m*m, (1 - c)*(1 + c)) && sql(l*c + m, 1) && sql(l + m*c, 1) ==> arc_ok(l, m, c);
     lemma arc_coef: \forall real l, m, c; arc_quad(l, m, c) ==> arc_ok(l, m, c);
     lemma mul1_all: \forall real a, x; mul1(a, x);
+    // proof: z3
     lemma unit_scale_h: \forall real x, y, z, w, k;
       unitq(x, y, z, w) && mul1(k*k, nrm4(x, y, z, w)) ==> sc_unit(x, y, z, w, k);
     lemma unit_scale: \forall real x, y, z, w, k; unitq(x, y, z, w) ==> sc_unit(x, y, z, w, k);
+    // proof: z3
     lemma arc_exp_all: \forall real p0, p1, p2, p3, r0, r1, r2, r3, l, m;
       arc_exp(p0, p1, p2, p3, r0, r1, r2, r3, l, m);
     // |l p + m r|^2 = l^2 + m^2 + 2 l m c for unit p, r
