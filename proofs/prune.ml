@@ -294,25 +294,26 @@ let relevant ~ieee task =
       let carries ls = (ieee && List.mem ls.Term.ls_name.Ident.id_string ops) || wp_symbol ls in
       let keep = ref Decl.Spr.empty and s = ref !goal and changed = ref true in
       let axioms = List.rev !axioms in
+      (* each round looks only at the axioms not kept yet, in the task's
+         order, each with its carrying symbols computed once *)
+      let pending = ref (List.map (fun (pr, def, syms) -> (pr, def, syms, Term.Sls.filter carries syms)) axioms) in
       while !changed do
         changed := false;
-        List.iter
-          (fun (pr, def, syms) ->
-            if not (Decl.Spr.mem pr !keep) then begin
+        pending :=
+          List.filter
+            (fun (pr, def, syms, r) ->
               let ok =
                 match def with
                 | Some ls -> Term.Sls.mem ls !s || not (carries ls)
-                | None ->
-                    let r = Term.Sls.filter carries syms in
-                    Term.Sls.is_empty r || Term.Sls.exists (fun ls -> Term.Sls.mem ls !s) r
+                | None -> Term.Sls.is_empty r || Term.Sls.exists (fun ls -> Term.Sls.mem ls !s) r
               in
               if ok then begin
                 keep := Decl.Spr.add pr !keep;
                 s := Term.Sls.union syms !s;
                 changed := true
-              end
-            end)
-          axioms
+              end;
+              not ok)
+            !pending
       done;
       let gone =
         List.fold_left

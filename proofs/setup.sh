@@ -30,13 +30,14 @@ out=$(cd "$out" && pwd)
 datadir=$(why3 --print-datadir)
 for d in cvc4_real z3_real; do
   for fam in 64 32 w; do
+    case $fam in w) rel=certbox_relevant_wp ;; *) rel=certbox_relevant ;; esac
     sed -e "s#@DATADIR@#$datadir#g" \
         -e "s#^transformation \"inline_trivial\"#transformation \"certbox_prune$fam\"\ntransformation \"certbox_strip\"\n&#" \
-        -e "s#^transformation \"encoding_smt_if_poly\"#&\ntransformation \"certbox_relevant$(test $fam = w && echo _wp)\"#" \
+        -e "s#^transformation \"encoding_smt_if_poly\"#&\ntransformation \"$rel\"#" \
       "$here/$d.drv.in" > "$out/${d}$fam.drv"
     grep -q "^transformation \"certbox_prune$fam\"" "$out/${d}$fam.drv"
     grep -q "^transformation \"certbox_strip\"" "$out/${d}$fam.drv"
-    grep -A1 "^transformation \"encoding_smt_if_poly\"" "$out/${d}$fam.drv" | grep -q "^transformation \"certbox_relevant$(test $fam = w && echo _wp)\"$"
+    grep -A1 "^transformation \"encoding_smt_if_poly\"" "$out/${d}$fam.drv" | grep -q "^transformation \"$rel\"$"
   done
 done
 cvc4=$(command -v cvc4)

@@ -21,5 +21,6 @@ echo "$ORACLES" \
      "tests/chain_exact.c tests/chain_cases.c" \
      "tests/batch_gen.c tests/batch_check.c" \
      "tests/trs_exact.c tests/trs_gen.c tests/trs_special.c" \
+     "tests/pwide_cases.c" \
      "tests/scene_exact.c tests/scene_gen.c" \
      "tests/gltf_exact.c tests/gltf_files.c"

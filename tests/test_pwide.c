@@ -44,6 +44,9 @@
  * wholly in front of the camera with wn = 2^-90.  Per twin and per check
  * a line "check NAME N UNIT checked, F failed".  The last line is
  * "P passed, F failed".
+ * This file is the driver (the twins' runs and checks, the random cases in
+ * order, the summary); the hard cases are in tests/pwide_cases.c
+ * (tests/pwide_parts.h).
  */
 #include <float.h>
 #include <math.h>
@@ -60,6 +63,7 @@
 #include "pnear_oracle.h"
 #include "pball_oracle.h"
 #include "proj_cases.h"
+#include "pwide_parts.h"
 
 enum { FN_SPH, FN_NEAR, FN_BALL, FN_ELL, NFN };
 enum { K_STATUS, K_SPECIAL, K_RELATION, K_EXACT, K_TIGHT, K_INPUT, K_SAME, NK };
@@ -70,12 +74,13 @@ static const char *const k_name[NK] = {"status", "special", "relation", "exact",
 static const char *const k_unit[NK] = {"calls", "calls", "ends", "checks", "ends", "calls", "calls"};
 
 /* the case in binary64, as the generators draw it */
-static double P[4][4], C[3], R, WN;
-static cbx_box B;
+double pwt_P[4][4], pwt_C[3], pwt_R, pwt_WN;
+cbx_box pwt_B;
 /* the float case widened (what the oracles and on_fail see) */
 static double PD[4][4], CD[3], RD, WND;
 /* the ellipsoid: radii E and rot Q (its center C), and their float values widened */
-static double E[3], Q[3][3], ED[3], QD[3][3];
+double pwt_E[3], pwt_Q[3][3];
+static double ED[3], QD[3][3];
 static cbx_box BD;
 
 static int cur_fn;
@@ -157,7 +162,7 @@ static void map_f(cbx_projf *pf, cbx_proj *pd)
     int i, j;
     for (i = 0; i < 4; i++)
         for (j = 0; j < 4; j++) {
-            pf->m[i][j] = f32(P[i][j]);
+            pf->m[i][j] = f32(pwt_P[i][j]);
             pd->m[i][j] = PD[i][j] = pf->m[i][j];
         }
 }
@@ -252,7 +257,7 @@ static void after_oracle(long passed0, long failed0, long passed, long failed, x
 }
 
 /* ---- the three twins ---------------------------------------------------------- */
-static cbx_status run_sph(const char *name)
+cbx_status pwt_run_sph(const char *name)
 {
     cbx_projf pf, pf0;
     cbx_proj pd;
@@ -266,8 +271,8 @@ static cbx_status run_sph(const char *name)
     case_name = name;
     map_f(&pf, &pd);
     for (j = 0; j < 3; j++)
-        CD[j] = cf[j] = f32(C[j]);
-    RD = rf = f32(R);
+        CD[j] = cf[j] = f32(pwt_C[j]);
+    RD = rf = f32(pwt_R);
     pf0 = pf;
     memcpy(cf0, cf, sizeof cf);
     rf0 = rf;
@@ -289,7 +294,7 @@ static cbx_status run_sph(const char *name)
     return sf;
 }
 
-static cbx_status run_near(const char *name)
+cbx_status pwt_run_near(const char *name)
 {
     cbx_projf pf, pf0;
     cbx_proj pd;
@@ -303,13 +308,13 @@ static cbx_status run_near(const char *name)
     case_name = name;
     map_f(&pf, &pd);
     for (j = 0; j < 3; j++) {
-        BD.lo[j] = bf.lo[j] = f32(B.lo[j]);
-        BD.hi[j] = bf.hi[j] = f32(B.hi[j]);
+        BD.lo[j] = bf.lo[j] = f32(pwt_B.lo[j]);
+        BD.hi[j] = bf.hi[j] = f32(pwt_B.hi[j]);
         nan |= f_nan(bf.lo[j]) | f_nan(bf.hi[j]);
         inf |= f_inf(bf.lo[j]) | f_inf(bf.hi[j]);
         empty |= bf.hi[j] < bf.lo[j] || bf.lo[j] == (float)INFINITY || bf.hi[j] == -(float)INFINITY;
     }
-    WND = wf = f32(WN);
+    WND = wf = f32(pwt_WN);
     pf0 = pf;
     bf0 = bf;
     wf0 = wf;
@@ -333,7 +338,7 @@ static cbx_status run_near(const char *name)
     return sf;
 }
 
-static cbx_status run_ball(const char *name)
+cbx_status pwt_run_ball(const char *name)
 {
     cbx_projf pf, pf0;
     cbx_proj pd;
@@ -347,9 +352,9 @@ static cbx_status run_ball(const char *name)
     case_name = name;
     map_f(&pf, &pd);
     for (j = 0; j < 3; j++)
-        CD[j] = cf[j] = f32(C[j]);
-    RD = rf = f32(R);
-    WND = wf = f32(WN);
+        CD[j] = cf[j] = f32(pwt_C[j]);
+    RD = rf = f32(pwt_R);
+    WND = wf = f32(pwt_WN);
     pf0 = pf;
     memcpy(cf0, cf, sizeof cf);
     rf0 = rf;
@@ -373,7 +378,7 @@ static cbx_status run_ball(const char *name)
 }
 
 /* an expected status of a hard case (counted under status) */
-static cbx_status run_ell(const char *name)
+cbx_status pwt_run_ell(const char *name)
 {
     cbx_projf pf, pf0;
     cbx_proj pd;
@@ -389,13 +394,13 @@ static cbx_status run_ell(const char *name)
     nan = map_nan(&pf);
     inf = map_inf(&pf);
     for (i = 0; i < 3; i++) {
-        CD[i] = cf[i] = f32(C[i]);
-        ED[i] = ef[i] = f32(E[i]);
+        CD[i] = cf[i] = f32(pwt_C[i]);
+        ED[i] = ef[i] = f32(pwt_E[i]);
         nf[i] = -ef[i];
         nan |= f_nan(cf[i]) | f_nan(ef[i]);
         inf |= f_inf(cf[i]) | f_inf(ef[i]);
         for (j = 0; j < 3; j++) {
-            QD[i][j] = qf[i][j] = f32(Q[i][j]);
+            QD[i][j] = qf[i][j] = f32(pwt_Q[i][j]);
             nq[i][j] = -qf[i][j];
             nan |= f_nan(qf[i][j]);
             inf |= f_inf(qf[i][j]);
@@ -424,282 +429,9 @@ static cbx_status run_ell(const char *name)
     after_oracle(p0, f0, Se.passed, Se.failed, &Se.dist);
     return sf;
 }
-
-/* the ball's hard cases as ellipsoids: a ball, and a tilted disk */
-static int ell_kind;
-static void ell_run(const char *name, cbx_status want, const char *what)
-{
-    (void)want;
-    (void)what;
-    E[0] = E[1] = E[2] = R;
-    tc_identity3(Q);
-    if (ell_kind == 1) {
-        tc_rotation(Q, 0.9, 0.3, -0.2, 0.1);
-        E[2] = 0;
-    }
-    run_ell(name);
-}
-
-static void expect(cbx_status got, cbx_status want, const char *what)
+void pwt_expect(cbx_status got, cbx_status want, const char *what)
 {
     check(K_STATUS, got == want, what);
-}
-
-/* ---- cases: test_psphere's and test_pball's (tests/proj_cases.c) ------------------ */
-static const double q0[4] = {1, 0, 0, 0}, t0[3] = {0, 0, 0};
-
-static void sph_run(const char *name, cbx_status want, const char *what)
-{
-    cbx_status st = run_sph(name);
-    if (what)
-        expect(st, want, what);
-}
-
-static void ball_run(const char *name, cbx_status want, const char *what)
-{
-    cbx_status st = run_ball(name);
-    if (what)
-        expect(st, want, what);
-}
-
-/* ---- cases: test_pnear's ---------------------------------------------------------- */
-static void set_box(double l0, double h0, double l1, double h1, double l2, double h2)
-{
-    B.lo[0] = l0; B.hi[0] = h0;
-    B.lo[1] = l1; B.hi[1] = h1;
-    B.lo[2] = l2; B.hi[2] = h2;
-}
-
-/* a box wholly in front of the camera plane (cbx_project_box gives CBX_OK
- * on the binary64 case), the near plane far below it */
-static void near_in_front(xu_rng *g)
-{
-    cbx_proj p;
-    cbx_box o;
-    int i, j;
-    tc_box_camera(g, P, &B, &WN);
-    for (i = 0; i < 4; i++)
-        for (j = 0; j < 4; j++)
-            p.m[i][j] = P[i][j];
-    if (cbx_project_box(&p, &B, &o) != CBX_OK)
-        return;
-    WN = 0x1p-90;
-    run_near("box in front, near plane at 2^-90");
-}
-
-static void near_hard(void)
-{
-    static const double bad_wn[] = {0.0, -0.0, -1.0, 0x1p-101, 0x1p121, INFINITY, -INFINITY};
-    int k;
-    tc_identity_camera(P);
-    set_box(-1, 1, -1, 1, -12, -8); WN = 0.125;
-    run_near("box ahead");
-    set_box(-1, 1, -1, 1, -4, 4);
-    run_near("box across the near plane (the camera inside)");
-    set_box(-1, 1, -1, 1, 1, 4);
-    expect(run_near("box behind the camera"), CBX_EMPTY, "a box behind the camera without CBX_EMPTY");
-    set_box(-1, 1, -1, 1, -0.125, 4);
-    run_near("box with a face on the near plane");
-    set_box(-1, 1, -1, 1, -0.0625, 4);
-    run_near("box just behind the near plane");
-    set_box(1, 1, 1, 1, -0.125, -0.125);
-    run_near("a point on the near plane");
-    set_box(-1e6, 1e6, -1e6, 1e6, -1e6, 1e6);
-    run_near("huge box around the camera");
-    set_box(1e3, 1e3 + 1e-9, 1e3, 1e3 + 1e-9, -1e4, -1e4 + 1e-9);
-    run_near("tiny box far away (a point in float)");
-    set_box(1e3, 1e3 + 1e-3, 1e3, 1e3 + 1e-3, -1e4, -1e4 + 1e-3);
-    run_near("small box far away");
-    for (k = 0; k < 23; k++) {
-        tc_identity_camera(P);
-        set_box(-1, 1, -1, 1, -4, 4); WN = 0.125;
-        if (k < 16)
-            P[k / 4][k % 4] = NAN;
-        else if (k < 22)
-            ((k - 16) % 2 ? B.hi : B.lo)[(k - 16) / 2] = NAN;
-        else
-            WN = NAN;
-        expect(run_near("NaN"), CBX_EINVAL, "NaN without CBX_EINVAL");
-    }
-    tc_identity_camera(P);
-    set_box(-1, 1, 1, -1, -4, 4); WN = 0.125;
-    expect(run_near("empty box"), CBX_EMPTY, "an empty box without CBX_EMPTY");
-    set_box(-1, 1, -1, 1, -4, INFINITY);
-    run_near("an infinite end");
-    for (k = 0; k < (int)(sizeof bad_wn / sizeof bad_wn[0]); k++) {
-        set_box(-1, 1, -1, 1, -12, -8); WN = bad_wn[k];
-        expect(run_near("near plane outside the domain"), CBX_ERANGE, "wn outside the domain without CBX_ERANGE");
-    }
-    WN = 0.125;
-    for (k = 0; k < 10; k++) {
-        tc_identity_camera(P);
-        set_box(-1, 1, -1, 1, -12, -8);
-        if (k < 4)
-            P[k][k == 3 ? 2 : k] = k == 3 ? -0x1p61 : 0x1p61;
-        else
-            (k % 2 ? B.hi : B.lo)[(k - 4) / 2] = k % 2 ? 0x1p61 : -0x1p61;
-        expect(run_near("an entry or a box end above 2^60"), CBX_ERANGE, "outside the domain without CBX_ERANGE");
-    }
-    tc_identity_camera(P);
-    P[3][0] = 0x1p-60;
-    P[0][0] = 0x1p50;
-    set_box(-1, 1, -1, 1, -4, 4);
-    run_near("a ratio beyond the range of an end");
-    memset(P, 0, sizeof P);
-    P[0][0] = 0x1p60; P[1][1] = 1; P[2][2] = 1; P[3][2] = 1;
-    set_box(1, 2, 0, 1, 0x1p-100, 1); WN = 0x1p-100;
-    expect(run_near("an end beyond 2^99 (a corner)"), CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
-    set_box(1, 2, 0, 1, 0, 1);
-    expect(run_near("an end beyond 2^99 (a crossing)"), CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
-    for (k = 0; k < 3; k++) {
-        memset(P, 0, sizeof P);
-        P[0][0] = 1; P[1][1] = 1; P[2][2] = 1;
-        P[3][3] = k == 0 ? 2 : k == 1 ? 0.125 : 0.0625;
-        set_box(-1, 1, -1, 1, -4, 4);
-        WN = 0.125;
-        run_near("W constant");
-    }
-    tc_identity_camera(P);
-    P[0][0] = P[0][1] = P[0][2] = P[0][3] = 0;
-    set_box(-1, 1, -1, 1, -4, 4);
-    run_near("X_0 zero");
-    memset(P, 0, sizeof P);
-    P[0][0] = 1; P[1][1] = 1; P[2][2] = 1; P[3][0] = 1; P[3][1] = 1; P[3][2] = 1;
-    set_box(0, 1, 0, 1, 0, 1); WN = 1;
-    run_near("corner on the near plane");
-    WN = 3;
-    run_near("only the far corner on the near plane");
-    WN = 2;
-    run_near("a diagonal plane through four corners");
-    for (k = 0; k < 8; k++) {
-        tc_scaled_camera(P, k);
-        set_box(-3, 5, -2, 7, -9, 0.5); WN = ldexp(0.01, 12 * k - 40);
-        run_near("scaled wide or narrow camera");
-    }
-}
-
-/* ---- cases: float's own ------------------------------------------------------------ */
-/* the three twins on the current map, ball (C, R), its box [C - |R|, C + |R|] and WN */
-static void run_all(const char *name)
-{
-    int j;
-    for (j = 0; j < 3; j++) {
-        B.lo[j] = C[j] - fabs(R);
-        B.hi[j] = C[j] + fabs(R);
-    }
-    run_sph(name);
-    run_near(name);
-    run_ball(name);
-}
-
-static void base_case(void)
-{
-    tc_identity_camera(P);
-    tc_set_ball(C, &R, 0.5, -0.25, -4, 1);
-    WN = 0.125;
-}
-
-static void float_hard(void)
-{
-    /* each input in turn: infinities (CBX_ERANGE), the largest float (out
-     * of the domain) and the least subnormal (in it, except wn) */
-    static const double v[] = {INFINITY, -INFINITY, FLT_MAX, -FLT_MAX, 0x1p-149, -0x1p-149, 0x1.ffffffp127, -1e39};
-    int k, s, j, i;
-    for (k = 0; k < (int)(sizeof v / sizeof v[0]); k++) {
-        for (s = 0; s < 31; s++) {   /* 16 map entries, the center, the radii, rot */
-            base_case();
-            E[0] = 1; E[1] = 0.5; E[2] = 0.25;
-            tc_identity3(Q);
-            if (s < 16)
-                P[s / 4][s % 4] = v[k];
-            else if (s < 19)
-                C[s - 16] = v[k];
-            else if (s < 22)
-                E[s - 19] = v[k];
-            else
-                Q[(s - 22) / 3][(s - 22) % 3] = v[k];
-            run_ell("an extreme float in one input of the ellipsoid");
-        }
-        for (s = 0; s < 21; s++) {   /* 16 map entries, the center, the radius, wn */
-            base_case();
-            if (s < 16)
-                P[s / 4][s % 4] = v[k];
-            else if (s < 19)
-                C[s - 16] = v[k];
-            else if (s < 20)
-                R = v[k];
-            else
-                WN = v[k];
-            if (s < 20)
-                run_sph("an extreme float in one input");
-            run_ball("an extreme float in one input");
-        }
-        for (s = 0; s < 23; s++) {   /* 16 map entries, the 6 box ends, wn */
-            base_case();
-            set_box(0, 1, -1, 0, -8, -2);
-            if (s < 16)
-                P[s / 4][s % 4] = v[k];
-            else if (s < 22)
-                ((s - 16) % 2 ? B.hi : B.lo)[(s - 16) / 2] = v[k];
-            else
-                WN = v[k];
-            run_near("an extreme float in one input");
-        }
-    }
-    /* empty float boxes: hi < lo, lo = +inf, hi = -inf (each alone: [+inf,
-     * +inf], [-inf, -inf]); alone, with NaN
-     * (CBX_EINVAL first), with an infinite or out-of-domain input or a bad
-     * wn (CBX_EMPTY first) */
-    for (k = 0; k < 5; k++)
-        for (s = 0; s < 5; s++) {
-            base_case();
-            set_box(0, 1, -1, 0, -8, -2);
-            if (k == 0) { B.lo[1] = 0.5f; B.hi[1] = 0.25f; }
-            if (k == 1) B.lo[2] = INFINITY;
-            if (k == 2) B.hi[0] = -INFINITY;
-            if (k == 3) { B.lo[1] = INFINITY; B.hi[1] = INFINITY; }   /* lo = +inf, not hi < lo */
-            if (k == 4) { B.lo[2] = -INFINITY; B.hi[2] = -INFINITY; } /* hi = -inf, not hi < lo */
-            if (s == 1) P[2][1] = NAN;
-            if (s == 2) P[0][3] = INFINITY;
-            if (s == 3) B.lo[0] = -INFINITY;
-            if (s == 4) WN = -1;
-            expect(run_near("an empty float box"), s == 1 ? CBX_EINVAL : CBX_EMPTY,
-                   s == 1 ? "an empty box with NaN without CBX_EINVAL" : "an empty box without CBX_EMPTY");
-        }
-    /* a box one float wide; negative zeros */
-    base_case();
-    set_box(0.5, 0x1.000002p-1, -0.25, -0.25, -4, -4);
-    run_near("a box one float wide");
-    base_case();
-    tc_set_ball(C, &R, -0.0, -0.0, -4, -0.0);
-    run_all("negative zeros");
-    /* ends in float's subnormal range and around 0: rows X scaled down
-     * (2^-120 .. 2^-150: the entries themselves float subnormals) */
-    for (k = 0; k < 4; k++) {
-        base_case();
-        for (j = 0; j < 3; j++)
-            for (i = 0; i < 4; i++)
-                P[j][i] = ldexp(P[j][i], -120 - 10 * k);
-        run_all("ends in float's subnormal range");
-        tc_set_ball(C, &R, 0, 0, -4, 1);
-        run_all("ends around 0, tiny");
-    }
-    /* X / W constant 0 (a zero row) and exactly representable ends */
-    memset(P, 0, sizeof P);
-    P[1][1] = 1; P[2][2] = 1; P[3][3] = 1;
-    tc_set_ball(C, &R, 0.5, 0.25, 0.75, 0.125);
-    WN = 0.5;
-    run_all("a zero row, the rest the identity");
-    /* ends near 2^98 (X up to 2^60 times 2^38) */
-    memset(P, 0, sizeof P);
-    P[0][0] = 0x1p60; P[1][1] = 1; P[2][2] = 1; P[3][3] = 1;
-    tc_set_ball(C, &R, 0x1p38, 0, 0, 1);
-    WN = 0.5;
-    run_all("ends near 2^98");
-    /* a double case that float rounding moves across the camera plane */
-    tc_camera(P, 1.83, 1.0, 0.1, 100, q0, t0);
-    tc_set_ball(C, &R, 0.3, -0.2, -1, 1 - 0x1p-30);
-    run_all("a ball tangent to the camera plane in float");
 }
 
 /* ---- summary ---------------------------------------------------------------------- */
@@ -725,35 +457,35 @@ int main(int argc, char **argv)
     pso_init(&Se, seed + 98);
     pno_init(&Sn, seed + 99);
     pbo_init(&Sb, seed + 99);
-    tc_sphere_hard(P, C, &R, sph_run);
-    near_hard();
-    tc_ball_hard(P, C, &R, &WN, 0x1p-20, ball_run);
-    float_hard();
-    for (ell_kind = 0; ell_kind < 2; ell_kind++)
-        tc_sphere_hard(P, C, &R, ell_run);
+    tc_sphere_hard(pwt_P, pwt_C, &pwt_R, pwt_sph_run);
+    pwt_near_hard();
+    tc_ball_hard(pwt_P, pwt_C, &pwt_R, &pwt_WN, 0x1p-20, pwt_ball_run);
+    pwt_float_hard();
+    for (pwt_ell_kind = 0; pwt_ell_kind < 2; pwt_ell_kind++)
+        tc_sphere_hard(pwt_P, pwt_C, &pwt_R, pwt_ell_run);
     for (k = 0; k < n; k++) {   /* the ellipsoid: a generator of its own (the others' cases unchanged) */
-        tc_sphere_camera(&ge, P, C, &R);
-        tc_ell_shape(&ge, R, E, Q);
-        run_ell("random camera");
-        tc_sphere_general(&ge, P, C, &R);
-        tc_ell_shape(&ge, R, E, Q);
-        run_ell("random map");
+        tc_sphere_camera(&ge, pwt_P, pwt_C, &pwt_R);
+        tc_ell_shape(&ge, pwt_R, pwt_E, pwt_Q);
+        pwt_run_ell("random camera");
+        tc_sphere_general(&ge, pwt_P, pwt_C, &pwt_R);
+        tc_ell_shape(&ge, pwt_R, pwt_E, pwt_Q);
+        pwt_run_ell("random map");
     }
     for (k = 0; k < n; k++) {
-        tc_sphere_camera(&g, P, C, &R);
-        run_sph("random camera");
-        tc_sphere_general(&g, P, C, &R);
-        run_sph("random map");
-        tc_box_camera(&g, P, &B, &WN);
-        run_near("random camera");
-        tc_box_general(&g, P, &B, &WN);
-        run_near("random general map");
+        tc_sphere_camera(&g, pwt_P, pwt_C, &pwt_R);
+        pwt_run_sph("random camera");
+        tc_sphere_general(&g, pwt_P, pwt_C, &pwt_R);
+        pwt_run_sph("random map");
+        tc_box_camera(&g, pwt_P, &pwt_B, &pwt_WN);
+        pwt_run_near("random camera");
+        tc_box_general(&g, pwt_P, &pwt_B, &pwt_WN);
+        pwt_run_near("random general map");
         if (k % 8 == 0)
-            near_in_front(&g);
-        tc_ball_camera(&g, P, C, &R, &WN);
-        run_ball("random camera");
-        tc_ball_general(&g, P, C, &R, &WN);
-        run_ball("random general map");
+            pwt_near_in_front(&g);
+        tc_ball_camera(&g, pwt_P, pwt_C, &pwt_R, &pwt_WN);
+        pwt_run_ball("random camera");
+        tc_ball_general(&g, pwt_P, pwt_C, &pwt_R, &pwt_WN);
+        pwt_run_ball("random general map");
     }
     printf("test_pwide: the binary32 twins against binary64 and the exact oracles: %ld random cameras and %ld random\n"
            "general maps per twin (seed %llu), and the hard cases\n", n, n, (unsigned long long)seed);
