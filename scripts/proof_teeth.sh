@@ -177,7 +177,7 @@ case_ pball-unit-lo src/f64/cbx_pball.c pb_unit proofs/pball.c r0,in0,rg,i01,r01
 # 27. the tight mode's compensated dot product: pred(c) certified when
 #    c - pred(c) >= RN(d - e), without the 1.125 that covers the rounding
 #    (pred(c) may then lie above the exact end: the assertion must fail)
-case_ tight-dot-pred-unpadded src/f64/cbx_tight.c dot_sum proofs/all.c w2,z,kl,ku,fu,fl,fb,fc,cE,fE,below,near,fin 'assert_w2\|ensures_below' \
+case_ tight-dot-pred-unpadded src/f64/cbx_tight.c dot_sum proofs/all.c w2,z,kl,ku,fu,fl,fb,fc,cE,fE,fn,below,near,fin 'assert_w2\|ensures_below' \
   "    double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);" \
   "    double g = cbx_sub_rn(d, e);" - &
 # 28. the tight mode's fast path: the lower end's vertex taken at the

@@ -286,6 +286,8 @@ static inline cbx_iv iv_lerp(double x0, double x1, double a, double b)
     va = iv_add(pa, iv_pt(x0)); /* pa first: cbx_add_dn's wider argument */
     vb = iv_add(pb, iv_pt(x0));
     /*@ assert v: va.lo <= x0 + a * (x1 - x0) <= va.hi && vb.lo <= x0 + b * (x1 - x0) <= vb.hi; */
+    /*@ assert va: va.lo >= x0 + a * (x1 - x0) - lerp_err(x0, x1) && va.hi <= x0 + a * (x1 - x0) + lerp_err(x0, x1); */
+    /*@ assert vb: vb.lo >= x0 + b * (x1 - x0) - lerp_err(x0, x1) && vb.hi <= x0 + b * (x1 - x0) + lerp_err(x0, x1); */
     return iv_hull(va, vb);
 }
 

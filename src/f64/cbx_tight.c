@@ -457,6 +457,7 @@ static cand dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
     double d = cbx_add_rn(cbx_mul_rn(mx, 0x1p-47), 0x1p-1060);
     /*@ assert dd: 0x1p-48 * mx + 0x1.2p-1071 <= d; */
     /*@ assert du: d <= 0x1.01p-47 * mx + 0x1.01p-1060; */
+    /*@ assert d4: 4 * d <= 0x1.1p-97 * (\abs(t) + \abs(p0.hi) + \abs(p1.hi) + \abs(p2.hi)) + 0x1p-1057; */
     cbx_dd ce = cbx_two_sum(s3.hi, r);
     double c = ce.hi;
     double e = ce.lo;
@@ -486,6 +487,9 @@ static cand dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
     /*@ assert cE: \abs(c) <= 0x1.0000001p0 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t) + 0x1.01p0 * d; */
     /*@ assert fE: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - f
                    <= 0x1p-50 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t) + 4 * d; */
+    /*@ assert fn: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - f
+                   <= 0x1p-50 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t)
+                      + 0x1.1p-97 * (\abs(t) + \abs(p0.hi) + \abs(p1.hi) + \abs(p2.hi)) + 0x1p-1057; */
     res.ok = (e >= d) + dn + (mx == 0.0) != 0;
     if (res.ok == 0) {
         res.c = f;
