@@ -93,11 +93,12 @@ RACE = '/* proof: race */'
 DEF = re.compile(r'^(?!typedef\b|extern\b)[A-Za-z_][\w \*]*?\b([A-Za-z_]\w*)\s*\(')
 
 
-def preprocess(tu):
-    """the unit as Frama-C's preprocessing sees it, comments kept"""
+def preprocess(tu, defines=False):
+    """the unit as Frama-C's preprocessing sees it, comments kept (and the
+    #define lines, with defines)"""
     incs = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
-    return subprocess.check_output(['gcc', '-E', '-C', '-D__FRAMAC__'] + incs + ['-Ispecs', tu],
-                                   cwd=ROOT, text=True)
+    return subprocess.check_output(['gcc', '-E', '-C'] + (['-dD'] if defines else []) + ['-D__FRAMAC__']
+                                   + incs + ['-Ispecs', tu], cwd=ROOT, text=True)
 
 
 def definitions(text):
@@ -223,9 +224,7 @@ LEMMA = re.compile(r'^\s*lemma\s+([A-Za-z_]\w*)\s*:')
 def z3_lemmas(tu, files):
     """the WP names of the lemmas marked Z3MARK in the unit (in FILEs, if
     any), in the order of the unit"""
-    incs = subprocess.check_output(['sh', os.path.join(ROOT, 'scripts', 'incs.sh')], text=True).split()
-    text = subprocess.check_output(['gcc', '-E', '-C', '-dD', '-D__FRAMAC__'] + incs + ['-Ispecs', tu],
-                                   cwd=ROOT, text=True)
+    text = preprocess(tu, defines=True)
     # the renamings the unit defines (#define NAME NAME_f): Frama-C expands
     # them in annotations, gcc -E does not
     ren = dict(re.findall(r'^#define ([A-Za-z_]\w*) ([A-Za-z_]\w*)\s*$', text, re.M))
