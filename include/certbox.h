@@ -50,26 +50,26 @@ extern "C" {
 typedef struct cbx_affine { double m[3][4]; } cbx_affine;
 
 /* the closed box [lo[0],hi[0]] x [lo[1],hi[1]] x [lo[2],hi[2]] */
-typedef struct cbx_box { double lo[3], hi[3]; } cbx_box;
+typedef struct cbx_box { double lo[3]; double hi[3]; } cbx_box;
 
 /* the real box [c - h, c + h] per axis; h >= 0 (h < 0: empty) */
-typedef struct cbx_cbox { double c[3], h[3]; } cbx_cbox;
+typedef struct cbx_cbox { double c[3]; double h[3]; } cbx_cbox;
 
 /* The binary32 (float) family: the same types and functions with float
  * numbers, every name ending in f (see cbx_api.h). */
 typedef struct cbx_affinef { float m[3][4]; } cbx_affinef;
-typedef struct cbx_boxf { float lo[3], hi[3]; } cbx_boxf;
-typedef struct cbx_cboxf { float c[3], h[3]; } cbx_cboxf;
+typedef struct cbx_boxf { float lo[3]; float hi[3]; } cbx_boxf;
+typedef struct cbx_cboxf { float c[3]; float h[3]; } cbx_cboxf;
 
 /* The 2D family (both formats): y_i = m[i][0]*x_0 + m[i][1]*x_1 + m[i][2]
  * (i = 0, 1), the closed box [lo[0],hi[0]] x [lo[1],hi[1]], and the box
  * [c - h, c + h] per axis (h < 0: empty). */
 typedef struct cbx_affine2 { double m[2][3]; } cbx_affine2;
-typedef struct cbx_box2 { double lo[2], hi[2]; } cbx_box2;
-typedef struct cbx_cbox2 { double c[2], h[2]; } cbx_cbox2;
+typedef struct cbx_box2 { double lo[2]; double hi[2]; } cbx_box2;
+typedef struct cbx_cbox2 { double c[2]; double h[2]; } cbx_cbox2;
 typedef struct cbx_affine2f { float m[2][3]; } cbx_affine2f;
-typedef struct cbx_box2f { float lo[2], hi[2]; } cbx_box2f;
-typedef struct cbx_cbox2f { float c[2], h[2]; } cbx_cbox2f;
+typedef struct cbx_box2f { float lo[2]; float hi[2]; } cbx_box2f;
+typedef struct cbx_cbox2f { float c[2]; float h[2]; } cbx_cbox2f;
 
 /* A projective map of space (both formats): X_i = m[i][0]*x_0 + m[i][1]*x_1
  * + m[i][2]*x_2 + m[i][3] for i = 0..3, the point (X_0/X_3, X_1/X_3,
@@ -81,7 +81,7 @@ typedef struct cbx_projf { float m[4][4]; } cbx_projf;
  * lies in [lo[i][j], hi[i][j]], the translation in column 3; what a chain
  * of rounded transforms or a rotation built from a quaternion is known to
  * be (cbx_transform_box_imat, cbx_imat_compose). */
-typedef struct cbx_imat { double lo[3][4], hi[3][4]; } cbx_imat;
+typedef struct cbx_imat { double lo[3][4]; double hi[3][4]; } cbx_imat;
 
 /* A keyframe of a motion (binary64): x -> t + R(q) diag(s) x, where R(q)
  * is the rotation of the unit quaternion q / |q| (q = (x, y, z, w), glTF's

@@ -60,7 +60,7 @@ static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_bo
                        cbx_box *out, size_t k, size_t n)
 {
     box_st r;
-    if (fast) {
+    if (fast != 0) {
         r = one_fast(a, in + k);
     } else if (CBX_IS_GENERAL) {
         r = one_box(a, in + k);

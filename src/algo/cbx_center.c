@@ -12,7 +12,7 @@
 #include "cbx_round.h"
 #include "cbx_domain.h"
 
-typedef struct cbox_res { cbx_fp c, h; } cbox_res;
+typedef struct cbox_res { cbx_fp c; cbx_fp h; } cbox_res;
 
 /* One output axis of the center/half transform. */
 /* proof: -wp-split */
@@ -78,7 +78,7 @@ static cbox_res cbox_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
     return r;
 }
 
-typedef struct cbox_axis_result { cbx_fp c, h; int ok; } cbox_axis_result;
+typedef struct cbox_axis_result { cbx_fp c; cbx_fp h; int ok; } cbox_axis_result;
 
 /* The kernel on a full row; else, on a finite map row, the kernel on the
  * row with its zero-coefficient columns dropped (their c and h count as 0:
@@ -99,26 +99,28 @@ static cbox_axis_result cbox_transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx
     r.c = CBX_C(0.0);
     r.h = cbx_pinf();
     r.ok = 0;
-    if (cbx_row_ok(m0, m1, m2, t, c0, h0, c1, h1, c2, h2)) {
+    if (cbx_row_ok(m0, m1, m2, t, c0, h0, c1, h1, c2, h2) != 0) {
         cbox_res k = cbox_axis(m0, m1, m2, t, c0, c1, c2, h0, h1, h2);
         r.c = k.c;
         r.h = k.h;
         r.ok = 1;
-    } else if (cbx_fin4(m0, m1, m2, t)) {
-        cbx_fp e0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : c0;
-        cbx_fp g0 = m0 == CBX_C(0.0) ? CBX_C(0.0) : h0;
-        cbx_fp e1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : c1;
-        cbx_fp g1 = m1 == CBX_C(0.0) ? CBX_C(0.0) : h1;
-        cbx_fp e2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : c2;
-        cbx_fp g2 = m2 == CBX_C(0.0) ? CBX_C(0.0) : h2;
+    } else if (cbx_fin4(m0, m1, m2, t) != 0) {
+        cbx_fp e0 = (m0 == CBX_C(0.0)) ? CBX_C(0.0) : c0;
+        cbx_fp g0 = (m0 == CBX_C(0.0)) ? CBX_C(0.0) : h0;
+        cbx_fp e1 = (m1 == CBX_C(0.0)) ? CBX_C(0.0) : c1;
+        cbx_fp g1 = (m1 == CBX_C(0.0)) ? CBX_C(0.0) : h1;
+        cbx_fp e2 = (m2 == CBX_C(0.0)) ? CBX_C(0.0) : c2;
+        cbx_fp g2 = (m2 == CBX_C(0.0)) ? CBX_C(0.0) : h2;
         /*@ assert dz: e0 == dz(m0, c0) && e1 == dz(m1, c1) && e2 == dz(m2, c2)
                        && g0 == dz(m0, h0) && g1 == dz(m1, h1) && g2 == dz(m2, h2); */
-        if (cbx_row_ok(m0, m1, m2, t, e0, g0, e1, g1, e2, g2)) {
+        if (cbx_row_ok(m0, m1, m2, t, e0, g0, e1, g1, e2, g2) != 0) {
             cbox_res k = cbox_axis(m0, m1, m2, t, e0, e1, e2, g0, g1, g2);
             r.c = k.c;
             r.h = k.h;
             r.ok = 1;
         }
+    } else {
+        /* r stays unbounded: an input is not finite */
     }
     return r;
 }
@@ -157,11 +159,11 @@ static void cbox_set_empty(cbx_cbox *out)
 
 cbx_status cbx_transform_cbox(const cbx_affine *a, const cbx_cbox *in, cbx_cbox *out)
 {
-    if (cbox_any_nan(a, in)) {
+    if (cbox_any_nan(a, in) != 0) {
         cbox_set_whole(out);
         return CBX_EINVAL;
     }
-    if (cbox_any_neg(in)) {
+    if (cbox_any_neg(in) != 0) {
         cbox_set_empty(out);
         return CBX_EMPTY;
     }
@@ -242,11 +244,11 @@ static void cbox2_set_empty(cbx_cbox2 *out)
 
 cbx_status cbx_transform_cbox2(const cbx_affine2 *a, const cbx_cbox2 *in, cbx_cbox2 *out)
 {
-    if (cbox2_any_nan(a, in)) {
+    if (cbox2_any_nan(a, in) != 0) {
         cbox2_set_whole(out);
         return CBX_EINVAL;
     }
-    if (cbox2_any_neg(in)) {
+    if (cbox2_any_neg(in) != 0) {
         cbox2_set_empty(out);
         return CBX_EMPTY;
     }

@@ -54,12 +54,12 @@ static conv_res b2c(cbx_fp lo, cbx_fp hi)
 */
 static int conv_ok(cbx_fp x, cbx_fp y)
 {
-    return x >= -CBX_K(R19) && x <= CBX_K(R19) && y >= -CBX_K(R19) && y <= CBX_K(R19);
+    return (x >= -CBX_K(R19)) && (x <= CBX_K(R19)) && (y >= -CBX_K(R19)) && (y <= CBX_K(R19));
 }
 
 /* One axis of a conversion, on values (both forms of the plane and of
  * space): the output ends and whether the axis was in the domain. */
-typedef struct conv_axis { cbx_fp a, b; int ok; } conv_axis;
+typedef struct conv_axis { cbx_fp a; cbx_fp b; int ok; } conv_axis;
 
 /* box -> cbox on one axis: the conversion in the domain, c = 0, h = +inf
  * outside it. */
@@ -74,7 +74,7 @@ static conv_axis b2c_one(cbx_fp lo, cbx_fp hi)
     r.a = CBX_C(0.0);
     r.b = cbx_pinf();
     r.ok = conv_ok(lo, hi);
-    if (r.ok) {
+    if (r.ok != 0) {
         conv_res k = b2c(lo, hi);
         r.a = k.a;
         r.b = k.b;
@@ -94,7 +94,7 @@ static conv_axis c2b_one(cbx_fp c, cbx_fp h)
     r.a = cbx_ninf();
     r.b = cbx_pinf();
     r.ok = conv_ok(c, h);
-    if (r.ok) {
+    if (r.ok != 0) {
         conv_res k = cbx_c2b(c, h);
         r.a = k.a;
         r.b = k.b;
@@ -125,13 +125,13 @@ static int b2c_set(const cbx_box *in, cbx_cbox *out, int i)
 
 cbx_status cbx_box_to_cbox(const cbx_box *in, cbx_cbox *out)
 {
-    if (box_any_nan(in)) {
+    if (box_any_nan(in) != 0) {
         out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
         out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
         out->c[2] = CBX_C(0.0); out->h[2] = cbx_pinf();
         return CBX_EINVAL;
     }
-    if (box_any_empty(in)) {
+    if (box_any_empty(in) != 0) {
         out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
         out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
         out->c[2] = CBX_C(0.0); out->h[2] = cbx_ninf();
@@ -162,11 +162,11 @@ static int c2b_set(const cbx_cbox *in, cbx_box *out, int i)
 
 cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
 {
-    if (cbox_any_nan_in(in)) {
+    if (cbox_any_nan_in(in) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
-    if (cbox_any_neg(in)) {
+    if (cbox_any_neg(in) != 0) {
         set_empty(out);
         return CBX_EMPTY;
     }
@@ -181,12 +181,12 @@ cbx_status cbx_cbox_to_box(const cbx_cbox *in, cbx_box *out)
 
 cbx_status cbx_box2_to_cbox2(const cbx_box2 *in, cbx_cbox2 *out)
 {
-    if (box2_any_nan(in)) {
+    if (box2_any_nan(in) != 0) {
         out->c[0] = CBX_C(0.0); out->h[0] = cbx_pinf();
         out->c[1] = CBX_C(0.0); out->h[1] = cbx_pinf();
         return CBX_EINVAL;
     }
-    if (plane_any_empty(in)) {
+    if (plane_any_empty(in) != 0) {
         out->c[0] = CBX_C(0.0); out->h[0] = cbx_ninf();
         out->c[1] = CBX_C(0.0); out->h[1] = cbx_ninf();
         return CBX_EMPTY;
@@ -200,11 +200,11 @@ cbx_status cbx_box2_to_cbox2(const cbx_box2 *in, cbx_cbox2 *out)
 
 cbx_status cbx_cbox2_to_box2(const cbx_cbox2 *in, cbx_box2 *out)
 {
-    if (cbox2_any_nan_in(in)) {
+    if (cbox2_any_nan_in(in) != 0) {
         set_whole2(out);
         return CBX_EINVAL;
     }
-    if (cbox2_any_neg(in)) {
+    if (cbox2_any_neg(in) != 0) {
         set_empty2(out);
         return CBX_EMPTY;
     }

@@ -116,7 +116,7 @@ static end_result ext_hi(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
 
 /* One output axis: the proven kernel on a full row, each end from its
  * vertex on a finite map row, the whole line [-inf, +inf] otherwise. */
-typedef struct axis_result { cbx_fp lo, hi; int ok; } axis_result;
+typedef struct axis_result { cbx_fp lo; cbx_fp hi; int ok; } axis_result;
 
 /*@ requires nan: !\is_NaN(l0) && !\is_NaN(h0) && !\is_NaN(l1) && !\is_NaN(h1)
                   && !\is_NaN(l2) && !\is_NaN(h2);
@@ -129,12 +129,12 @@ static axis_result transform_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
                                   cbx_fp l2, cbx_fp h2)
 {
     axis_result r;
-    if (cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)) {
+    if (cbx_row_ok(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) != 0) {
         cbx_ends e = cbx_axis(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         r.lo = e.lo;
         r.hi = e.hi;
         r.ok = 1;
-    } else if (cbx_fin4(m0, m1, m2, t)) {
+    } else if (cbx_fin4(m0, m1, m2, t) != 0) {
         end_result lo = ext_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         end_result hi = ext_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
         r.lo = lo.v;
@@ -168,11 +168,11 @@ cbx_status cbx_transform_box(const cbx_affine *a, const cbx_box *in, cbx_box *ou
     if (cbx_map_fast(a) && cbx_box_fast(in)) {
         return cbx_fast_box(a, in, out);
     }
-    if (any_nan(a, in)) {
+    if (any_nan(a, in) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
-    if (box_any_empty(in)) {
+    if (box_any_empty(in) != 0) {
         set_empty(out);
         return CBX_EMPTY;
     }
@@ -230,11 +230,11 @@ static int any_nan2(const cbx_affine2 *a, const cbx_box2 *in)
 
 cbx_status cbx_transform_box2(const cbx_affine2 *a, const cbx_box2 *in, cbx_box2 *out)
 {
-    if (any_nan2(a, in)) {
+    if (any_nan2(a, in) != 0) {
         set_whole2(out);
         return CBX_EINVAL;
     }
-    if (plane_any_empty(in)) {
+    if (plane_any_empty(in) != 0) {
         set_empty2(out);
         return CBX_EMPTY;
     }

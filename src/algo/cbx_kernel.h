@@ -22,10 +22,10 @@
 
 /* One column of the sum: the smaller and larger of the two products, and
  * the larger magnitude. */
-typedef struct cbx_terms { cbx_fp lo, hi, mag; } cbx_terms;
+typedef struct cbx_terms { cbx_fp lo; cbx_fp hi; cbx_fp mag; } cbx_terms;
 
 /* Both ends of one output axis. */
-typedef struct cbx_ends { cbx_fp lo, hi; } cbx_ends;
+typedef struct cbx_ends { cbx_fp lo; cbx_fp hi; } cbx_ends;
 
 /* m*l and m*h, each rounded once; lo and hi within u tmag + eta of the
  * exact smaller and larger product, mag within a relative u of tmag. */

@@ -71,8 +71,9 @@ static inline box_st one_kernel(const cbx_affine *a, const cbx_box *b)
 */
 static inline box_st one_fast(const cbx_affine *a, const cbx_box *b)
 {
-    if (cbx_box_fast(b))
+    if (cbx_box_fast(b) != 0) {
         return one_kernel(a, b);
+    }
     return one_box(a, b);
 }
 

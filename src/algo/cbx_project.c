@@ -47,7 +47,7 @@ static int proj_any_nan(const cbx_proj *p)
 */
 static int proj_rng(cbx_fp x, cbx_fp nb, cbx_fp b)
 {
-    return x >= nb && x <= b;
+    return (x >= nb) && (x <= b);
 }
 
 /*@ assigns \nothing;
@@ -69,7 +69,7 @@ static int axis_in(cbx_fp l, cbx_fp h)
 {
     int a = proj_rng(l, -CBX_K(SB), CBX_K(SB));
     int b = proj_rng(h, -CBX_K(SB), CBX_K(SB));
-    return a && b && l <= h;
+    return a && b && (l <= h);
 }
 
 /*@ requires \valid_read(p) && \valid_read(b);
@@ -92,12 +92,12 @@ static int proj_in(const cbx_proj *p, const cbx_box *b)
 /* Bounds of X / W at the corner (x, y, z): ok 2 with pcorner, or ok 0 (W's
  * enclosure not positive: the corner is not clear of the camera plane), or
  * ok 1 (a quotient out of range: not pnear). */
-typedef struct cbx_qcorner { cbx_fp lo, hi, wl; int ok; } cbx_qcorner;
+typedef struct cbx_qcorner { cbx_fp lo; cbx_fp hi; cbx_fp wl; int ok; } cbx_qcorner;
 
 /* W's enclosure at a corner (the interval kernel on the point box), computed
  * once per corner and shared by the three output axes: 8 kernel rows for W
  * per box instead of 24. */
-typedef struct cbx_wc { cbx_fp lo, hi; } cbx_wc;
+typedef struct cbx_wc { cbx_fp lo; cbx_fp hi; } cbx_wc;
 
 /* Lemma functions (no code): one corner's ends, sound and tight, from the
  * kernel's enclosures [a, .] of X and [wl, wh] of W, the quotient's
@@ -232,7 +232,7 @@ static cbx_qcorner proj_corner(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
         ql = cbx_quot_ok(xe.lo, bl);
         qh = cbx_quot_ok(xe.hi, bh);
         r.ok = 1;
-        if (ql != 0 && qh != 0) {
+        if ((ql != 0) && (qh != 0)) {
             cbx_fp lo = cbx_div_dn(xe.lo, bl);
             cbx_fp hi = cbx_div_up(xe.hi, bh);
             /* the products of the case analysis (lemma prod_le_nn) */
@@ -417,17 +417,17 @@ static void proj_hull(cbx_fp lo, cbx_fp hi, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx
 static int proj_ok8(int a0, int a1, int a2, int a3, int a4, int a5, int a6, int a7)
 {
     int m = a0;
-    m = a1 < m ? a1 : m;
-    m = a2 < m ? a2 : m;
-    m = a3 < m ? a3 : m;
-    m = a4 < m ? a4 : m;
-    m = a5 < m ? a5 : m;
-    m = a6 < m ? a6 : m;
-    m = a7 < m ? a7 : m;
+    m = (a1 < m) ? a1 : m;
+    m = (a2 < m) ? a2 : m;
+    m = (a3 < m) ? a3 : m;
+    m = (a4 < m) ? a4 : m;
+    m = (a5 < m) ? a5 : m;
+    m = (a6 < m) ? a6 : m;
+    m = (a7 < m) ? a7 : m;
     return m;
 }
 
-typedef struct cbx_paxis { cbx_fp lo, hi; int ok; } cbx_paxis;
+typedef struct cbx_paxis { cbx_fp lo; cbx_fp hi; int ok; } cbx_paxis;
 
 /*@ requires fin: prow_fast(m0, m1, m2, t) && prow_fast(w0, w1, w2, wt);
     requires finb: \is_finite(l0) && \is_finite(h0) && \is_finite(l1) && \is_finite(h1)
@@ -500,11 +500,11 @@ static void proj_put(cbx_box *out, cbx_paxis r0, cbx_paxis r1, cbx_paxis r2,
 /* proof: -wp-split */
 cbx_status cbx_project_box(const cbx_proj *p, const cbx_box *in, cbx_box *out)
 {
-    if (proj_any_nan(p) | box_any_nan(in)) {
+    if ((proj_any_nan(p) | box_any_nan(in)) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
-    if (box_any_empty(in)) {
+    if (box_any_empty(in) != 0) {
         set_empty(out);
         return CBX_EMPTY;
     }
@@ -549,11 +549,11 @@ cbx_status cbx_project_box(const cbx_proj *p, const cbx_box *in, cbx_box *out)
                                  v0, v1, v2, v3, v4, v5, v6, v7);
         cbx_paxis r2 = proj_axis(a20, a21, a22, a23, w0, w1, w2, wt, l0, h0, l1, h1, l2, h2,
                                  v0, v1, v2, v3, v4, v5, v6, v7);
-        if (r0.ok == 0 || r1.ok == 0 || r2.ok == 0) {
+        if ((r0.ok == 0) || (r1.ok == 0) || (r2.ok == 0)) {
             set_whole(out);
             return CBX_EBEHIND;
         }
-        if (r0.ok == 1 || r1.ok == 1 || r2.ok == 1) {
+        if ((r0.ok == 1) || (r1.ok == 1) || (r2.ok == 1)) {
             set_whole(out);
             return CBX_ERANGE;
         }

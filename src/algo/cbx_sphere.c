@@ -283,7 +283,7 @@ static int sph_ok(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
     if (!cbx_cls(m2, m2, CBX_K(SB), CBX_K(SB))) {
         return 0;
     }
-    return t >= -CBX_K(RT) && t <= CBX_K(RT);
+    return (t >= -CBX_K(RT)) && (t <= CBX_K(RT));
 }
 
 /*@ requires \valid(out) && 0 <= i <= 2;
@@ -298,7 +298,7 @@ static void sph_whole(cbx_box *out, int i)
 
 /* One axis of a ball's box (sphere or ellipsoid): its ends, and whether
  * the row was in the domain. */
-typedef struct ball_res { cbx_fp lo, hi; int ok; } ball_res;
+typedef struct ball_res { cbx_fp lo; cbx_fp hi; int ok; } ball_res;
 
 /* One axis of the sphere: the kernel inside the domain, [-inf, +inf]
  * outside it (values in and out, as for the ellipsoid: the status's goal
@@ -316,7 +316,7 @@ static ball_res sphere_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
 {
     ball_res e;
     e.ok = sph_ok(m0, m1, m2, t);
-    if (e.ok) {
+    if (e.ok != 0) {
         conv_res lh = ball_axis_bounds(m0, m1, m2, t);
         e.lo = lh.a;
         e.hi = lh.b;
@@ -330,7 +330,7 @@ static ball_res sphere_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t)
 /* contract: include/certbox.h */
 cbx_status cbx_sphere_box(const cbx_affine *a, cbx_box *out)
 {
-    if (aff_any_nan(a)) {
+    if (aff_any_nan(a) != 0) {
         sph_whole(out, 0);
         sph_whole(out, 1);
         sph_whole(out, 2);
@@ -420,7 +420,7 @@ static int ell_ok(cbx_fp r0, cbx_fp r1, cbx_fp r2, cbx_fp d0, cbx_fp d1, cbx_fp 
     if (!cbx_cls(r2, d2, CBX_K(EB), CBX_K(EB))) {
         return 0;
     }
-    return c >= -CBX_K(RT) && c <= CBX_K(RT);
+    return (c >= -CBX_K(RT)) && (c <= CBX_K(RT));
 }
 
 /*@ requires \valid_read(center + (0 .. 2)) && \valid_read(radii + (0 .. 2))
@@ -453,7 +453,7 @@ static ball_res ellipsoid_axis(cbx_fp r0, cbx_fp r1, cbx_fp r2,
 {
     ball_res e;
     e.ok = ell_ok(r0, r1, r2, d0, d1, d2, c);
-    if (e.ok) {
+    if (e.ok != 0) {
         conv_res lh = ell_axis_bounds(r0, r1, r2, d0, d1, d2, c);
         e.lo = lh.a;
         e.hi = lh.b;
@@ -468,7 +468,7 @@ static ball_res ellipsoid_axis(cbx_fp r0, cbx_fp r1, cbx_fp r2,
 cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
                              const cbx_fp rot[3][3], cbx_box *out)
 {
-    if (ell_any_nan(center, radii, rot)) {
+    if (ell_any_nan(center, radii, rot) != 0) {
         sph_whole(out, 0);
         sph_whole(out, 1);
         sph_whole(out, 2);
@@ -515,7 +515,7 @@ cbx_status cbx_ellipsoid_box(const cbx_fp center[3], const cbx_fp radii[3],
 /* contract: include/cbx_api.h */
 cbx_status cbx_disk_box2(const cbx_affine2 *a, cbx_box2 *out)
 {
-    if (aff2_any_nan(a)) {
+    if (aff2_any_nan(a) != 0) {
         set_whole2(out);
         return CBX_EINVAL;
     }
@@ -552,7 +552,7 @@ static int ell2_any_nan(const cbx_fp *center, const cbx_fp *radii, const cbx_fp 
 cbx_status cbx_ellipse_box2(const cbx_fp center[2], const cbx_fp radii[2],
                             const cbx_fp rot[2][2], cbx_box2 *out)
 {
-    if (ell2_any_nan(center, radii, rot)) {
+    if (ell2_any_nan(center, radii, rot) != 0) {
         set_whole2(out);
         return CBX_EINVAL;
     }

@@ -58,13 +58,17 @@ static inline end_result vertex_lo(cbx_fp m, cbx_fp l, cbx_fp h)
         /*@ assert sg: m > 0; */
         r.v = l;
         r.ok = cbx_is_fin(l);
-        if (r.ok) pos_below(m, l, h);
+        if (r.ok != 0) {
+            pos_below(m, l, h);
+        }
         /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l <= m*p; */
     } else if (m < CBX_C(0.0)) {
         /*@ assert sg: m < 0; */
         r.v = h;
         r.ok = cbx_is_fin(h);
-        if (r.ok) neg_below(m, l, h);
+        if (r.ok != 0) {
+            neg_below(m, l, h);
+        }
         /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h <= m*p; */
     } else {
         /*@ assert sg: m == 0; */
@@ -91,13 +95,17 @@ static inline end_result vertex_hi(cbx_fp m, cbx_fp l, cbx_fp h)
         /*@ assert sg: m > 0; */
         r.v = h;
         r.ok = cbx_is_fin(h);
-        if (r.ok) pos_above(m, l, h);
+        if (r.ok != 0) {
+            pos_above(m, l, h);
+        }
         /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*h >= m*p; */
     } else if (m < CBX_C(0.0)) {
         /*@ assert sg: m < 0; */
         r.v = l;
         r.ok = cbx_is_fin(l);
-        if (r.ok) neg_above(m, l, h);
+        if (r.ok != 0) {
+            neg_above(m, l, h);
+        }
         /*@ assert r.ok != 0 ==> \forall real p; ext_in(p, l, h) ==> m*l >= m*p; */
     } else {
         /*@ assert sg: m == 0; */

@@ -17,7 +17,7 @@
 */
 static inline int cbx_cls(cbx_fp m, cbx_fp c, cbx_fp bm, cbx_fp bc)
 {
-    return m >= -bm && m <= bm && c >= -bc && c <= bc;
+    return (m >= -bm) && (m <= bm) && (c >= -bc) && (c <= bc);
 }
 
 /* Run-time check of one product's domain class (specs: dom_pair), the
@@ -26,7 +26,7 @@ static inline int cbx_cls(cbx_fp m, cbx_fp c, cbx_fp bm, cbx_fp bc)
  * class that holds ends the search: an or of all 18 (no branch, fewer
  * proof paths) made the careful paths that check every pair 7x slower
  * (cbx_transform_cbox 62 ns -> 462 ns per box, make bench 2026-11-25). */
-#define CBX_CLS_TRY(tag, bm, bc) if (cbx_cls(m, c, CBX_C(bm), CBX_C(bc))) return 1;
+#define CBX_CLS_TRY(tag, bm, bc) if (cbx_cls(m, c, CBX_C(bm), CBX_C(bc)) != 0) { return 1; }
 /*@ requires fin: \is_finite(m) && \is_finite(c);
     assigns \nothing;
     ensures val: \result != 0 <==> dom_pair(m, c);
@@ -42,7 +42,7 @@ static inline int cbx_dom_pair(cbx_fp m, cbx_fp c)
 /*@ assigns \nothing;
     ensures \result != 0 <==> \is_finite(x);
 */
-static inline int cbx_is_fin(cbx_fp x) { return x >= -CBX_K(FMAX) && x <= CBX_K(FMAX); }
+static inline int cbx_is_fin(cbx_fp x) { return (x >= -CBX_K(FMAX)) && (x <= CBX_K(FMAX)); }
 
 /* 1 if the four are finite (one call: the callers' goals stay linear). */
 /*@ assigns \nothing;
@@ -75,7 +75,7 @@ static inline int cbx_row_ok(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
     if (!cbx_is_fin(h1)) return 0;
     if (!cbx_is_fin(l2)) return 0;
     if (!cbx_is_fin(h2)) return 0;
-    if (!(t >= -CBX_K(RT) && t <= CBX_K(RT))) return 0;
+    if (!((t >= -CBX_K(RT)) && (t <= CBX_K(RT)))) return 0;
     if (!cbx_dom_pair(m0, l0)) return 0;
     if (!cbx_dom_pair(m0, h0)) return 0;
     if (!cbx_dom_pair(m1, l1)) return 0;
@@ -103,7 +103,7 @@ static inline int cbx_is_inverted(cbx_fp lo, cbx_fp hi) { return hi < lo; }
 */
 static inline int cbx_no_point(cbx_fp lo, cbx_fp hi)
 {
-    return hi < lo || lo > CBX_K(FMAX) || hi < -CBX_K(FMAX);
+    return (hi < lo) || (lo > CBX_K(FMAX)) || (hi < -CBX_K(FMAX));
 }
 
 /* The input checks of a box, each one predicate of the contracts (one call
@@ -266,6 +266,8 @@ static inline int cbx_severity(cbx_status s)
         r = 2;
     } else if (s == CBX_EMPTY) {
         r = 1;
+    } else {
+        /* CBX_OK: severity 0, r's initial value */
     }
     return r;
 }

@@ -46,10 +46,10 @@
 
 #include "certbox.h"
 
-typedef struct cbx_dd { double hi, lo; } cbx_dd;
+typedef struct cbx_dd { double hi; double lo; } cbx_dd;
 
 /* Eight doubles whose exact sum the tight mode's certificate tracks. */
-typedef struct cbx_vec8 { double v0, v1, v2, v3, v4, v5, v6, v7; } cbx_vec8;
+typedef struct cbx_vec8 { double v0; double v1; double v2; double v3; double v4; double v5; double v6; double v7; } cbx_vec8;
 
 #if defined(__FRAMAC__)
 /*@ requires fin: \is_finite(a) && \is_finite(b);
@@ -149,9 +149,9 @@ static inline cbx_dd cbx_two_prod_dekker(double a, double b)
     r.hi = a * b;
     /* keep both factors <= 2^995: |a*b| <= 2^1018 makes the other <= 2^23,
      * so a power-of-two exchange is exact and leaves a*b unchanged */
-    if (a > 0x1p995 || a < -0x1p995)
+    if ((a > 0x1p995) || (a < -0x1p995))
         r.lo = cbx_dekker_err(a * 0x1p-64, b * 0x1p64, r.hi);
-    else if (b > 0x1p995 || b < -0x1p995)
+    else if ((b > 0x1p995) || (b < -0x1p995))
         r.lo = cbx_dekker_err(a * 0x1p64, b * 0x1p-64, r.hi);
     else
         r.lo = cbx_dekker_err(a, b, r.hi);

@@ -9,7 +9,7 @@
 #include "cbx_prec.h"
 #include "cbx_round.h"
 
-typedef struct conv_res { cbx_fp a, b; } conv_res;
+typedef struct conv_res { cbx_fp a; cbx_fp b; } conv_res;
 
 /* One axis, cbox -> box: returns (lo, hi). */
 /*@ requires fin: \is_finite(c) && \is_finite(h);

@@ -43,7 +43,7 @@ static cbx_fp opaque(cbx_fp x)
 /* Bit-identical (signed zeros told apart), and no NaN. */
 static int same(cbx_fp x, cbx_fp y)
 {
-    return x == y && (x != CBX_C(0.0) || (CBX_C(1.0) / x > CBX_C(0.0)) == (CBX_C(1.0) / y > CBX_C(0.0)));
+    return (x == y) && ((x != CBX_C(0.0)) || (((CBX_C(1.0) / x) > CBX_C(0.0)) == ((CBX_C(1.0) / y) > CBX_C(0.0))));
 }
 
 #if defined(CBX_TEST_NAIVE_SQRT)
@@ -77,7 +77,7 @@ static unsigned check_sqrt_cases(void)
 #else
 #define SQ cbx_sqrtf_cases
 #endif
-    for (i = 0; i < sizeof SQ / sizeof SQ[0]; i++) {
+    for (i = 0; i < (sizeof(SQ) / sizeof(SQ[0])); i++) {
         if (!same(check_sqrt(opaque(SQ[i][0])), SQ[i][1])) {
             bad |= CBX_IEEE_SQRT;
         }
@@ -107,7 +107,7 @@ static unsigned check_div_cases(void)
 #else
 #define DV cbx_divf_cases
 #endif
-    for (i = 0; i < sizeof DV / sizeof DV[0]; i++) {
+    for (i = 0; i < (sizeof(DV) / sizeof(DV[0])); i++) {
         if (!same(check_div(opaque(DV[i][0]), opaque(DV[i][1])), DV[i][2])) {
             bad |= CBX_IEEE_DIV;
         }
@@ -123,20 +123,20 @@ static unsigned check_eft(void)
 {
     unsigned bad = 0;
     unsigned i;
-    for (i = 0; i < sizeof cbx_prod_cases / sizeof cbx_prod_cases[0]; i++) {
+    for (i = 0; i < (sizeof(cbx_prod_cases) / sizeof(cbx_prod_cases[0])); i++) {
         cbx_dd d = cbx_two_prod(opaque(cbx_prod_cases[i][0]), opaque(cbx_prod_cases[i][1]));
         if (!same(d.hi, cbx_prod_cases[i][2]) || !same(d.lo, cbx_prod_cases[i][3])) {
             bad |= CBX_IEEE_EFT;
         }
     }
-    for (i = 0; i < sizeof cbx_sum_cases / sizeof cbx_sum_cases[0]; i++) {
+    for (i = 0; i < (sizeof(cbx_sum_cases) / sizeof(cbx_sum_cases[0])); i++) {
         cbx_dd d = cbx_two_sum(opaque(cbx_sum_cases[i][0]), opaque(cbx_sum_cases[i][1]));
         if (!same(d.hi, cbx_sum_cases[i][2]) || !same(d.lo, cbx_sum_cases[i][3])) {
             bad |= CBX_IEEE_EFT;
         }
     }
 #if !CBX_EFT_DEKKER
-    for (i = 0; i < sizeof cbx_fma_cases / sizeof cbx_fma_cases[0]; i++) {
+    for (i = 0; i < (sizeof(cbx_fma_cases) / sizeof(cbx_fma_cases[0])); i++) {
         cbx_fp r = CBX_FMA(opaque(cbx_fma_cases[i][0]), opaque(cbx_fma_cases[i][1]),
                            opaque(cbx_fma_cases[i][2]));
         if (!same(r, cbx_fma_cases[i][3])) {
@@ -209,11 +209,11 @@ unsigned cbx_ieee_fmt(void)
         bad |= CBX_IEEE_FTZ;
     }
     r = cbx_mul_rn(opaque(CBX_K(ETA)), opaque(CBX_C(0x1p100)));
-    if (r != CBX_K(ETA) * CBX_C(0x1p100)) {
+    if (r != (CBX_K(ETA) * CBX_C(0x1p100))) {
         bad |= CBX_IEEE_FTZ;
     }
     r = cbx_mul_rn(cbx_add_rn(opaque(CBX_K(ETA)), opaque(CBX_K(ETA))), opaque(CBX_C(0x1p100)));
-    if (r != CBX_K(ETA2) * CBX_C(0x1p100)) {
+    if (r != (CBX_K(ETA2) * CBX_C(0x1p100))) {
         bad |= CBX_IEEE_FTZ;
     }
 
@@ -243,7 +243,7 @@ unsigned cbx_ieee_fmt(void)
         bad |= CBX_IEEE_SPECIAL;
     }
     r = cbx_add_rn(opaque(-CBX_C(0.0)), opaque(-CBX_C(0.0)));
-    if (r != CBX_C(0.0) || CBX_C(1.0) / r > CBX_C(0.0)) {
+    if ((r != CBX_C(0.0)) || ((CBX_C(1.0) / r) > CBX_C(0.0))) {
         bad |= CBX_IEEE_SPECIAL;
     }
 

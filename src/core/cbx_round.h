@@ -98,7 +98,7 @@ static inline cbx_fp cbx_neg(cbx_fp x) { return -x; }
 static inline cbx_fp cbx_abs(cbx_fp x)
 {
     cbx_fp n = -x;
-    return x < n ? n : x;
+    return (x < n) ? n : x;
 }
 
 /* min and max, exact (inputs are never NaN here). */
@@ -107,14 +107,14 @@ static inline cbx_fp cbx_abs(cbx_fp x)
     ensures fin: \is_finite(\result);
     ensures val: \result == \min(x, y);
 */
-static inline cbx_fp cbx_min2(cbx_fp x, cbx_fp y) { return x < y ? x : y; }
+static inline cbx_fp cbx_min2(cbx_fp x, cbx_fp y) { return (x < y) ? x : y; }
 
 /*@ requires fin: \is_finite(x) && \is_finite(y);
     assigns \nothing;
     ensures fin: \is_finite(\result);
     ensures val: \result == \max(x, y);
 */
-static inline cbx_fp cbx_max2(cbx_fp x, cbx_fp y) { return x < y ? y : x; }
+static inline cbx_fp cbx_max2(cbx_fp x, cbx_fp y) { return (x < y) ? y : x; }
 
 /* The one outward widening of a bound: 5.5 u R + 2^-1067 with the computed
  * scale R = |t| + g0 + g1 + g2 (g_j >= 0 the magnitudes of the terms). */

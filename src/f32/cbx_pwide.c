@@ -51,7 +51,7 @@ static int pw_nan(float x) { return x != x; }
 /*@ assigns \nothing;
     ensures \result != 0 <==> \is_finite(x);
 */
-static int pw_fin(float x) { return x >= -PW_FMAX && x <= PW_FMAX; }
+static int pw_fin(float x) { return (x >= -PW_FMAX) && (x <= PW_FMAX); }
 
 /*@ requires \valid_read(p);
     assigns \nothing;
@@ -73,8 +73,8 @@ static int pw_proj_nan(const cbx_projf *p)
 */
 static int pw_row_ok(float m0, float m1, float m2, float t)
 {
-    return m0 >= -0x1p60F && m0 <= 0x1p60F && m1 >= -0x1p60F && m1 <= 0x1p60F
-        && m2 >= -0x1p60F && m2 <= 0x1p60F && t >= -0x1p120F && t <= 0x1p120F;
+    return (m0 >= -0x1p60F) && (m0 <= 0x1p60F) && (m1 >= -0x1p60F) && (m1 <= 0x1p60F)
+        && (m2 >= -0x1p60F) && (m2 <= 0x1p60F) && (t >= -0x1p120F) && (t <= 0x1p120F);
 }
 
 /*@ requires \valid_read(p);
@@ -94,7 +94,7 @@ static int pw_proj_ok(const cbx_projf *p)
     assigns \nothing;
     ensures \result != 0 <==> no_point_f(l, h);
 */
-static int pw_nopt(float l, float h) { return h < l || l > PW_FMAX || h < -PW_FMAX; }
+static int pw_nopt(float l, float h) { return (h < l) || (l > PW_FMAX) || (h < -PW_FMAX); }
 
 /* Each twin's inputs, checked in one call each: any NaN (the predicate
  * of its nan_input behavior), then every input finite with the map's rows
@@ -263,7 +263,7 @@ static void pw_empty(cbx_boxf *o)
 /*@ assigns \nothing;
     ensures \result != 0 <==> (\is_finite(x) && -PW_EMAX <= x <= PW_EMAX);
 */
-static int pw_small(double x) { return x >= -PW_EMAX && x <= PW_EMAX; }
+static int pw_small(double x) { return (x >= -PW_EMAX) && (x <= PW_EMAX); }
 
 /* The binary64 result b with status st as a float box: CBX_OK rounded
  * outward (an end above 2^100: CBX_ERANGE instead), CBX_EMPTY empty, any
@@ -284,7 +284,7 @@ static int pw_small(double x) { return x >= -PW_EMAX && x <= PW_EMAX; }
 */
 static cbx_status pw_narrow(cbx_status st, const cbx_box *b, cbx_boxf *o)
 {
-    if (st == CBX_OK && pw_small(b->lo[0]) && pw_small(b->hi[0]) && pw_small(b->lo[1])
+    if ((st == CBX_OK) && pw_small(b->lo[0]) && pw_small(b->hi[0]) && pw_small(b->lo[1])
         && pw_small(b->hi[1]) && pw_small(b->lo[2]) && pw_small(b->hi[2])) {
         o->lo[0] = pw_down(b->lo[0]); o->hi[0] = pw_up(b->hi[0]);
         o->lo[1] = pw_down(b->lo[1]); o->hi[1] = pw_up(b->hi[1]);
@@ -296,7 +296,7 @@ static cbx_status pw_narrow(cbx_status st, const cbx_box *b, cbx_boxf *o)
         return CBX_EMPTY;
     }
     pw_whole(o);
-    return st == CBX_OK ? CBX_ERANGE : st;
+    return (st == CBX_OK) ? CBX_ERANGE : st;
 }
 
 /* ---- the twins -------------------------------------------------------- */
@@ -334,7 +334,7 @@ cbx_status cbx_project_spheref(const cbx_projf *p, const float c[3], float r, cb
     cbx_box b;
     cbx_status st;
     cbx_status res;
-    if (ps_in_nan(p, c, r)) {
+    if (ps_in_nan(p, c, r) != 0) {
         pw_whole(out);
         return CBX_EINVAL;
     }
@@ -365,11 +365,11 @@ cbx_status cbx_project_box_nearf(const cbx_projf *p, const cbx_boxf *in, float w
     double wd;
     cbx_status st;
     cbx_status res;
-    if (pn_in_nan(p, in, wn)) {
+    if (pn_in_nan(p, in, wn) != 0) {
         pw_whole(out);
         return CBX_EINVAL;
     }
-    if (pw_nopt(in->lo[0], in->hi[0]) | pw_nopt(in->lo[1], in->hi[1]) | pw_nopt(in->lo[2], in->hi[2])) {
+    if ((pw_nopt(in->lo[0], in->hi[0]) | pw_nopt(in->lo[1], in->hi[1]) | pw_nopt(in->lo[2], in->hi[2])) != 0) {
         pw_empty(out);
         return CBX_EMPTY;
     }
@@ -414,7 +414,7 @@ cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float 
     cbx_box b;
     cbx_status st;
     cbx_status res;
-    if (ps_in_nan(p, c, r) | pw_nan(wn)) {
+    if ((ps_in_nan(p, c, r) | pw_nan(wn)) != 0) {
         pw_whole(out);
         return CBX_EINVAL;
     }
@@ -448,8 +448,8 @@ cbx_status cbx_project_sphere_nearf(const cbx_projf *p, const float c[3], float 
 }
 
 /* The ellipsoid's float arguments as doubles (exact), in one object. */
-typedef struct { cbx_proj d; double c[3], s[3], r[3][3]; } pw_ell;
-typedef struct { cbx_projf d; float c[3], s[3], r[3][3]; } pw_ellf;
+typedef struct { cbx_proj d; double c[3]; double s[3]; double r[3][3]; } pw_ell;
+typedef struct { cbx_projf d; float c[3]; float s[3]; float r[3][3]; } pw_ellf;
 /* Output axis i's promise (PW_PE: the arguments read at Pre, as \old). */
 #define PE_OK(i) \result == CBX_OK ==> \is_finite(out->lo[i]) && \is_finite(out->hi[i]) \
     && pe_axis(out->lo[i], out->hi[i], PW_PE(i)) && pef_tight(out->lo[i], out->hi[i], PW_PE(i))
@@ -527,7 +527,7 @@ static cbx_status pw_ell_wide(const cbx_projf *p, const float center[3], const f
 cbx_status cbx_project_ellipsoidf(const cbx_projf *p, const float center[3], const float radii[3],
                                   const float rot[3][3], cbx_boxf *out)
 {
-    if (pe_in_nan(p, center, radii, rot)) {
+    if (pe_in_nan(p, center, radii, rot) != 0) {
         pw_whole(out);
         return CBX_EINVAL;
     }

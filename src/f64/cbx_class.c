@@ -24,7 +24,7 @@
 #include "cbx_round.h"
 #include "cbx_domain.h"
 
-typedef struct span { double lo, hi; } span;
+typedef struct span { double lo; double hi; } span;
 
 /* |x| <= b, and x is finite (false for NaN and infinities). */
 /*@ requires \is_finite(b);
@@ -33,7 +33,7 @@ typedef struct span { double lo, hi; } span;
 */
 static inline int in_rng(double x, double b)
 {
-    return x >= -b && x <= b;
+    return (x >= -b) && (x <= b);
 }
 
 /* The box end pair (l, h): finite, ordered, |l|, |h| <= b. */
@@ -43,7 +43,7 @@ static inline int in_rng(double x, double b)
 */
 static inline int end_pair(double l, double h, double b)
 {
-    return in_rng(l, b) && in_rng(h, b) && l <= h;
+    return in_rng(l, b) && in_rng(h, b) && (l <= h);
 }
 
 /* The translation column: t + x over x in [l, h], outward. */
@@ -290,7 +290,7 @@ static int tr_ok(const cbx_affine *a)
 */
 static cbx_status kern_identity(const cbx_affine *a, const cbx_box *in, cbx_box *out)
 {
-    if (ends_ok(in, 0x1p1018)) {
+    if (ends_ok(in, 0x1p1018) != 0) {
         return fast_identity(a, in, out);
     }
     return cbx_transform_box(a, in, out);
@@ -332,8 +332,8 @@ static int aff_all_fin(const cbx_affine *a)
 */
 static int off_diag_zero(const cbx_affine *a)
 {
-    return a->m[0][1] == 0.0 && a->m[0][2] == 0.0 && a->m[1][0] == 0.0
-           && a->m[1][2] == 0.0 && a->m[2][0] == 0.0 && a->m[2][1] == 0.0;
+    return (a->m[0][1] == 0.0) && (a->m[0][2] == 0.0) && (a->m[1][0] == 0.0)
+           && (a->m[1][2] == 0.0) && (a->m[2][0] == 0.0) && (a->m[2][1] == 0.0);
 }
 
 /*@ requires valid: \valid_read(a);
@@ -346,7 +346,7 @@ static int row_has_one(const cbx_affine *a, int i)
     double x = a->m[i][0];
     double y = a->m[i][1];
     double z = a->m[i][2];
-    return (y == 0.0 && z == 0.0) || (x == 0.0 && z == 0.0) || (x == 0.0 && y == 0.0);
+    return ((y == 0.0) && (z == 0.0)) || ((x == 0.0) && (z == 0.0)) || ((x == 0.0) && (y == 0.0));
 }
 
 cbx_class cbx_classify(const cbx_affine *a)
@@ -354,11 +354,11 @@ cbx_class cbx_classify(const cbx_affine *a)
     if (!aff_all_fin(a)) {
         return CBX_CLASS_GENERAL;
     }
-    if (off_diag_zero(a)) {
-        if (!(a->m[0][0] == 1.0 && a->m[1][1] == 1.0 && a->m[2][2] == 1.0)) {
+    if (off_diag_zero(a) != 0) {
+        if (!((a->m[0][0] == 1.0) && (a->m[1][1] == 1.0) && (a->m[2][2] == 1.0))) {
             return CBX_CLASS_SCALE;
         }
-        if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0) {
+        if ((a->m[0][3] == 0.0) && (a->m[1][3] == 0.0) && (a->m[2][3] == 0.0)) {
             return CBX_CLASS_IDENTITY;
         }
         return CBX_CLASS_TRANSLATE;
@@ -405,7 +405,7 @@ static int translate_holds(const cbx_affine *a)
 */
 static cbx_class class_checked(const cbx_affine *a, cbx_class cls)
 {
-    if (cls != CBX_CLASS_IDENTITY && cls != CBX_CLASS_TRANSLATE) {
+    if ((cls != CBX_CLASS_IDENTITY) && (cls != CBX_CLASS_TRANSLATE)) {
         return CBX_CLASS_GENERAL;
     }
     if (!translate_holds(a)) {
@@ -414,7 +414,7 @@ static cbx_class class_checked(const cbx_affine *a, cbx_class cls)
     if (cls == CBX_CLASS_TRANSLATE) {
         return CBX_CLASS_TRANSLATE;
     }
-    if (a->m[0][3] == 0.0 && a->m[1][3] == 0.0 && a->m[2][3] == 0.0) {
+    if ((a->m[0][3] == 0.0) && (a->m[1][3] == 0.0) && (a->m[2][3] == 0.0)) {
         return CBX_CLASS_IDENTITY;
     }
     return CBX_CLASS_GENERAL;

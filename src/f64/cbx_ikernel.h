@@ -71,7 +71,7 @@ static inline cbx_fp cbx_isum3(int up, cbx_fp tl, cbx_fp th,
 {
     (void)ml0; (void)mh0; (void)ml1; (void)mh1; (void)ml2; (void)mh2;
     (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
-    cbx_fp t = up != 0 ? th : tl;
+    cbx_fp t = (up != 0) ? th : tl;
     /*@ assert T: \abs(t) <= \max(\abs(tl), \abs(th)) && -CBX_RT <= t <= CBX_RT; */
     /*@ assert X: -(itmag(ml0, mh0, l0, h0)) <= itsel(up, ml0, mh0, l0, h0) <= itmag(ml0, mh0, l0, h0)
                   && -(itmag(ml1, mh1, l1, h1)) <= itsel(up, ml1, mh1, l1, h1) <= itmag(ml1, mh1, l1, h1)

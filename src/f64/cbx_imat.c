@@ -16,7 +16,7 @@
 
 /* One coordinate, checked: the kernel in the fast range, else the whole
  * line; ok says which. */
-typedef struct cbx_icoord { cbx_fp lo, hi; int ok; } cbx_icoord;
+typedef struct cbx_icoord { cbx_fp lo; cbx_fp hi; int ok; } cbx_icoord;
 
 /* 1 when [l, h] is ordered, finite and within [nb, b] (IEEE comparisons:
  * false on NaN).  The bounds come as two literals (nb = -b): a negated
@@ -92,7 +92,7 @@ static int imat_any_bad(const cbx_imat *a)
 /* The three coordinates of a's linear part applied to one column (a box,
  * or column j of the right factor of a composition), plus the
  * translation [tl_i, th_i] of each row (a's, or 0). */
-typedef struct cbx_icol { cbx_icoord e0, e1, e2; } cbx_icol;
+typedef struct cbx_icol { cbx_icoord e0; cbx_icoord e1; cbx_icoord e2; } cbx_icol;
 
 /*@ requires valid: \valid_read(a);
     assigns \nothing;
@@ -134,7 +134,7 @@ cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box 
         set_whole(out);
         return CBX_EINVAL;
     }
-    if (box_any_empty(in)) {
+    if (box_any_empty(in) != 0) {
         set_empty(out);
         return CBX_EMPTY;
     }
@@ -144,7 +144,7 @@ cbx_status cbx_transform_box_imat(const cbx_imat *a, const cbx_box *in, cbx_box 
     out->lo[0] = x.e0.lo; out->hi[0] = x.e0.hi;
     out->lo[1] = x.e1.lo; out->hi[1] = x.e1.hi;
     out->lo[2] = x.e2.lo; out->hi[2] = x.e2.hi;
-    return x.e0.ok + x.e1.ok + x.e2.ok == 3 ? CBX_OK : CBX_ERANGE;
+    return ((x.e0.ok + x.e1.ok + x.e2.ok) == 3) ? CBX_OK : CBX_ERANGE;
 }
 
 /* Every entry of out [-inf, +inf]. */
@@ -166,11 +166,12 @@ static void whole_imat(cbx_imat *out)
     *out = r;
 }
 
-/* Column j of out from c. */
+/* Column j of out from c: six assignments (statements, no comma
+ * operator; a call site adds the last semicolon). */
 #define CBX_PUT_COL(out, j, c) \
-    ((out)->lo[0][j] = (c).e0.lo, (out)->hi[0][j] = (c).e0.hi, \
-     (out)->lo[1][j] = (c).e1.lo, (out)->hi[1][j] = (c).e1.hi, \
-     (out)->lo[2][j] = (c).e2.lo, (out)->hi[2][j] = (c).e2.hi)
+    (out)->lo[0][j] = (c).e0.lo; (out)->hi[0][j] = (c).e0.hi; \
+    (out)->lo[1][j] = (c).e1.lo; (out)->hi[1][j] = (c).e1.hi; \
+    (out)->lo[2][j] = (c).e2.lo; (out)->hi[2][j] = (c).e2.hi
 
 cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out)
 {
@@ -192,5 +193,5 @@ cbx_status cbx_imat_compose(const cbx_imat *a, const cbx_imat *b, cbx_imat *out)
     *out = r;
     int ok = c0.e0.ok + c0.e1.ok + c0.e2.ok + c1.e0.ok + c1.e1.ok + c1.e2.ok
              + c2.e0.ok + c2.e1.ok + c2.e2.ok + c3.e0.ok + c3.e1.ok + c3.e2.ok;
-    return ok == 12 ? CBX_OK : CBX_ERANGE;
+    return (ok == 12) ? CBX_OK : CBX_ERANGE;
 }

@@ -17,7 +17,7 @@
 #include "cbx_domain.h"
 #include "cbx_onebox.h"
 
-typedef struct mspan { double lo, hi; int ok; } mspan;
+typedef struct mspan { double lo; double hi; int ok; } mspan;
 
 /* Lemma function: a value r below (q above) both end images of the point
  * p is below (above) its image under M(s) for every s in [0, 1]
@@ -222,5 +222,5 @@ cbx_status cbx_motion_box(const cbx_affine *a0, const cbx_affine *a1, const cbx_
                           in->lo[0], in->hi[0], in->lo[1], in->hi[1], in->lo[2], in->hi[2],
                           e0.o, e1.o);
     *out = u.o;
-    return (e0.s == CBX_OK && e1.s == CBX_OK && u.ok) ? CBX_OK : CBX_ERANGE;
+    return ((e0.s == CBX_OK) && (e1.s == CBX_OK) && u.ok) ? CBX_OK : CBX_ERANGE;
 }

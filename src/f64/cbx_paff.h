@@ -48,7 +48,7 @@ static inline int ps_proj_nan(const cbx_proj *p)
 */
 static inline int ps_in(double x, double b)
 {
-    return x >= -b && x <= b;
+    return (x >= -b) && (x <= b);
 }
 
 /*@ assigns \nothing;
@@ -199,10 +199,12 @@ static inline cbx_iv ps_e_at(double t, double a0, double a1, double a2, double a
 static inline double ps_cl(double x)
 {
     double r = -PS_L;
-    if (x >= -PS_L && x <= PS_L) {
+    if ((x >= -PS_L) && (x <= PS_L)) {
         r = x;
     } else if (x > PS_L) {
         r = PS_L;
+    } else {
+        /* x < -PS_L or NaN: r keeps -PS_L */
     }
     return r;
 }
@@ -274,10 +276,10 @@ static inline double ps_frac(cbx_iv w, double wn, double rate)
     double lo = ps_cl(w.lo);
     double need = ps_add(ps_sub(ps_cl(wn), lo), ps_sub(ps_cl(w.hi), lo));
     double f = 0.0;
-    if (rate >= 0x1p-400 && need > 0.0) {
+    if ((rate >= 0x1p-400) && (need > 0.0)) {
         f = ps_qt(ps_mul(need, 2.0), rate);
     }
-    return f > 1.0 ? 1.0 : f > 0.0 ? f : 0.0;
+    return (f > 1.0) ? 1.0 : (f > 0.0) ? f : 0.0;
 }
 
 /* ---- the width of a certified end ---------------------------------------- */
@@ -299,10 +301,10 @@ static inline int ps_span(double x, double y, double v)
 
 /* ---- the three output axes ------------------------------------------------- */
 /* One output axis: its ends, ok 0 when it could not be certified. */
-typedef struct ps_ax { double lo, hi; int ok; } ps_ax;
+typedef struct ps_ax { double lo; double hi; int ok; } ps_ax;
 
 /* One certified end v, its witness of tightness w (the searches of
  * src/f64/cbx_psph.c and cbx_pell.c); ok 0 when none was found. */
-typedef struct ps_fin { double v, w; int ok; } ps_fin;
+typedef struct ps_fin { double v; double w; int ok; } ps_fin;
 
 #endif /* CBX_PAFF_H */

@@ -83,7 +83,7 @@ static int pb_dom_in(const cbx_proj *p, const double c[3], double r, double wn)
     int r2 = ps_row_in(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3]);
     int r3 = ps_row_in(p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]);
     int ct = ps_in(c[0], PS_M) && ps_in(c[1], PS_M) && ps_in(c[2], PS_M) && ps_in(r, PS_M);
-    int w = wn >= PB_WLO && wn <= PB_WHI;
+    int w = (wn >= PB_WLO) && (wn <= PB_WHI);
     return r0 && r1 && r2 && r3 && ct && w;
 }
 
@@ -225,11 +225,11 @@ static double pb_sqrt(double x)
 */
 static double pb_c1(double x)
 {
-    return x > 1.0 ? 1.0 : x < -1.0 ? -1.0 : x;
+    return (x > 1.0) ? 1.0 : (x < -1.0) ? -1.0 : x;
 }
 
 /* A direction: sign(r) v / |v| shrunk by PB_SHRINK, 0 when |v| < 2^-400. */
-typedef struct pb_q { double q0, q1, q2; int ok; } pb_q;
+typedef struct pb_q { double q0; double q1; double q2; int ok; } pb_q;
 
 /*@ requires \is_finite(v0) && \is_finite(v1) && \is_finite(v2) && \is_finite(r);
     requires -PS_L <= v0 <= PS_L && -PS_L <= v1 <= PS_L && -PS_L <= v2 <= PS_L;
@@ -241,7 +241,7 @@ static pb_q pb_unitv(double v0, double v1, double v2, double r)
 {
     pb_q q;
     double n = pb_sqrt(ps_dot(v0, v1, v2, v0, v1, v2));
-    double f = r < 0.0 ? -PB_SHRINK : PB_SHRINK;
+    double f = (r < 0.0) ? -PB_SHRINK : PB_SHRINK;
     q.q0 = 0.0;
     q.q1 = 0.0;
     q.q2 = 0.0;
@@ -265,7 +265,7 @@ static double pb_next(double f)
     if (f != 0.0) {
         n = cbx_mul_rn(f, 16.0);
     }
-    return n > 1.0 ? 1.0 : n;
+    return (n > 1.0) ? 1.0 : n;
 }
 
 /* The rate of W at c + r q per unit of the witness's fraction along
@@ -321,7 +321,7 @@ static pb_q pb_witness(pb_q k, double b0, double b1, double b2, double b3,
         double y1 = pb_c1(ps_add(k.q1, ps_mul(frac, ps_sub(g.q1, k.q1))));
         double y2 = pb_c1(ps_add(k.q2, ps_mul(frac, ps_sub(g.q2, k.q2))));
         double nx = pb_next(frac);
-        if (pb_unit(y0, y1, y2)) {
+        if (pb_unit(y0, y1, y2) != 0) {
             cbx_iv w = pb_val(0.0, b0, b1, b2, b3, b0, b1, b2, b3, c0, c1, c2, r, y0, y1, y2);
             if (w.lo >= wn) {
                 /*@ assert in: pb_in(wn, b0, b1, b2, b3, c0, c1, c2, r, y0, y1, y2); */
@@ -333,7 +333,7 @@ static pb_q pb_witness(pb_q k, double b0, double b1, double b2, double b3,
             }
             if (frac == 0.0) {
                 double gs = ps_frac(w, wn, pb_rate(k, g, b0, b1, b2, r));
-                nx = gs > nx ? gs : nx;
+                nx = (gs > nx) ? gs : nx;
             }
         }
         frac = nx;
@@ -345,7 +345,7 @@ static pb_q pb_witness(pb_q k, double b0, double b1, double b2, double b3,
 /* An upper end t0 with the multiplier s of its certificate (clip != 0:
  * s = s*, else s = t) and, for a clipped end, the direction q of its point
  * on the near plane's circle; ok 0 for none. */
-typedef struct pb_cand { double t, s; pb_q q; int clip, ok; } pb_cand;
+typedef struct pb_cand { double t; double s; pb_q q; int clip; int ok; } pb_cand;
 
 /* A candidate's direction in range: each entry in [-1, 1]. */
 /*@ predicate pb_qok(pb_q q) = \is_finite(q.q0) && \is_finite(q.q1) && \is_finite(q.q2)
@@ -384,11 +384,11 @@ static pb_q pb_perp(double b0, double b1, double b2)
     double x0 = 0.0;
     double x1 = b2;
     double x2 = -b1;                      /* b x e0 */
-    if (cbx_abs(b1) <= cbx_abs(b0) && cbx_abs(b1) <= cbx_abs(b2)) {
+    if ((cbx_abs(b1) <= cbx_abs(b0)) && (cbx_abs(b1) <= cbx_abs(b2))) {
         x0 = -b2;
         x1 = 0.0;
         x2 = b0;                          /* b x e1 */
-    } else if (cbx_abs(b2) <= cbx_abs(b0) && cbx_abs(b2) < cbx_abs(b1)) {
+    } else if ((cbx_abs(b2) <= cbx_abs(b0)) && (cbx_abs(b2) < cbx_abs(b1))) {
         x0 = b1;
         x1 = -b0;
         x2 = 0.0;                         /* b x e2 */
@@ -421,14 +421,14 @@ static pb_uv pb_uperp(double a0, double a1, double a2, double b0, double b1, dou
     double u2 = ps_sub(a2, ps_mul(al, b2));
     double na = pb_sqrt(ps_dot(a0, a1, a2, a0, a1, a2));
     o.n = pb_sqrt(ps_dot(u0, u1, u2, u0, u1, u2));
-    o.d = o.n > ps_mul(na, 0x1p-20) && o.n >= 0x1p-400 ? pb_unitv(u0, u1, u2, 1.0) : pb_perp(b0, b1, b2);
+    o.d = ((o.n > ps_mul(na, 0x1p-20)) && (o.n >= 0x1p-400)) ? pb_unitv(u0, u1, u2, 1.0) : pb_perp(b0, b1, b2);
     return o;
 }
 
 /* s* = alpha + g |u| / (|b| rho), g = (W(c) - wn) / (|r| |b|); ok 0
  * when the plane misses the ball (g not in (-1, 1)) or a divisor is below
  * 2^-400. */
-typedef struct pb_mu { double s, g, rho; pb_q uh; int ok; } pb_mu;
+typedef struct pb_mu { double s; double g; double rho; pb_q uh; int ok; } pb_mu;
 
 /*@ requires \is_finite(a0) && \is_finite(a1) && \is_finite(a2) && \is_finite(b0) && \is_finite(b1)
              && \is_finite(b2) && \is_finite(B) && \is_finite(r) && \is_finite(wn);
@@ -452,10 +452,10 @@ static pb_mu pb_mult(double a0, double a1, double a2, double b0, double b1, doub
     m.rho = 0.0;
     m.ok = 0;
     m.uh = pb_perp(1.0, 0.0, 0.0);
-    if (nb2 >= 0x1p-400 && rb >= 0x1p-400) {
+    if ((nb2 >= 0x1p-400) && (rb >= 0x1p-400)) {
         double al = ps_qt(ps_dot(a0, a1, a2, b0, b1, b2), nb2);
         double g = ps_qt(ps_sub(B, wn), rb);
-        if (g > -1.0 && g < 1.0) {
+        if ((g > -1.0) && (g < 1.0)) {
             double rho = pb_sqrt(ps_sub(1.0, ps_mul(g, g)));
             double den = ps_mul(nb, rho);
             if (den >= 0x1p-400) {
@@ -503,7 +503,7 @@ static pb_q pb_cdir(double g, double rho, pb_q uh, double b0, double b1, double 
 {
     pb_q bh = pb_unitv(b0, b1, b2, 1.0);
     pb_q q;
-    double sg = r < 0.0 ? -1.0 : 1.0;
+    double sg = (r < 0.0) ? -1.0 : 1.0;
     q.q0 = pb_c1(ps_mul(sg, ps_sub(ps_mul(rho, uh.q0), ps_mul(g, bh.q0))));
     q.q1 = pb_c1(ps_mul(sg, ps_sub(ps_mul(rho, uh.q1), ps_mul(g, bh.q1))));
     q.q2 = pb_c1(ps_mul(sg, ps_sub(ps_mul(rho, uh.q2), ps_mul(g, bh.q2))));
@@ -529,7 +529,7 @@ static pb_cand pb_clip(double a0, double a1, double a2, double a3,
     if (m.ok != 0) {
         double t = pb_tend(m.s, a0, a1, a2, b0, b1, b2, A, B, r, wn);
         o.q = pb_cdir(m.g, m.rho, m.uh, b0, b1, b2, r);
-        if (ps_in(t, PS_C) && ps_in(m.s, PS_C) && t >= m.s) {
+        if (ps_in(t, PS_C) && ps_in(m.s, PS_C) && (t >= m.s)) {
             o.t = t;
             o.s = m.s;
             o.ok = 1;
@@ -539,7 +539,7 @@ static pb_cand pb_clip(double a0, double a1, double a2, double a3,
 }
 
 /* ---- the search --------------------------------------------------------- */
-typedef struct pb_fin { double v, w; int ok; } pb_fin;
+typedef struct pb_fin { double v; double w; int ok; } pb_fin;
 
 /* The promise of a found upper end (pb_find, pb_upper), written once: v
  * finite with X <= v W at every point in front, w with some point in front
@@ -571,8 +571,8 @@ static int pb_try(double th, double tl, double s, int clip, pb_q q, double a0, d
                   double b0, double b1, double b2, double b3,
                   double c0, double c1, double c2, double r, double wn)
 {
-    double m = clip != 0 ? s : th;
-    return m <= th && ps_span(th, tl, th)
+    double m = (clip != 0) ? s : th;
+    return (m <= th) && ps_span(th, tl, th)
            && pb_cert(th, m, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)
            && pb_wit(tl, q.q0, q.q1, q.q2, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
 }
@@ -589,7 +589,7 @@ static pb_fin pb_find(pb_cand c, double a0, double a1, double a2, double a3,
                       double c0, double c1, double c2, double r, double wn)
 {
     pb_fin f;
-    double t0 = c.ok != 0 ? c.t : 0.0;
+    double t0 = (c.ok != 0) ? c.t : 0.0;
     double d = cbx_mul_rn(cbx_add_rn(1.0, cbx_abs(t0)), 0x1p-48);
     pb_q q;
     int k;
@@ -598,7 +598,7 @@ static pb_fin pb_find(pb_cand c, double a0, double a1, double a2, double a3,
     f.ok = 0;
     q.ok = 0;
     if (c.ok != 0) {
-        pb_q dir = c.clip != 0 ? c.q
+        pb_q dir = (c.clip != 0) ? c.q
                  : pb_unitv(ps_sub(a0, ps_mul(t0, b0)), ps_sub(a1, ps_mul(t0, b1)), ps_sub(a2, ps_mul(t0, b2)), r);
         q = pb_witness(dir, b0, b1, b2, b3, c0, c1, c2, r, wn);
     }
@@ -611,7 +611,7 @@ static pb_fin pb_find(pb_cand c, double a0, double a1, double a2, double a3,
     for (k = 0; k < PB_TRIES && d <= 0x1p90 && q.ok != 0; k++) {
         double th = t0 + d;
         double tw = ps_sub(t0, ps_mul(d, 64.0));   /* the witness's room: only th is returned */
-        double tl = ps_in(th, PS_B) && ps_in(tw, PS_B) && ps_span(th, tw, th) ? tw : t0 - d;
+        double tl = (ps_in(th, PS_B) && ps_in(tw, PS_B) && ps_span(th, tw, th)) ? tw : (t0 - d);
         if (ps_in(th, PS_B) && ps_in(tl, PS_B)
             && pb_try(th, tl, c.s, c.clip, q, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn)) {
             f.v = th;
@@ -628,7 +628,7 @@ static pb_fin pb_find(pb_cand c, double a0, double a1, double a2, double a3,
  * any sign of den (the ball may cross the camera plane: an end whose
  * tangent point is in front is still a root).  ok 0 when |den| < 2^-400
  * or a root is beyond 2^99. */
-typedef struct pb_rts { pb_cand hi, lo; } pb_rts;
+typedef struct pb_rts { pb_cand hi; pb_cand lo; } pb_rts;
 
 /*@ requires args: pb_args(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r, wn);
     assigns \nothing;
@@ -642,7 +642,7 @@ static pb_rts pb_roots(double a0, double a1, double a2, double a3,
     pb_rts o;
     ps_qd e = ps_quad(a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
     double den = cbx_abs(e.den);
-    double h = e.den < 0.0 ? -e.h : e.h;   /* t = (h -+ sq) / den, den > 0 */
+    double h = (e.den < 0.0) ? -e.h : e.h;   /* t = (h -+ sq) / den, den > 0 */
     (void)wn;
     o.hi = pb_none(0);
     o.lo = o.hi;
@@ -699,7 +699,7 @@ static ps_ax pb_axis_of(double a0, double a1, double a2, double a3, double b0, d
     x.lo = 0.0;
     x.hi = 0.0;
     x.ok = 0;
-    if (h.ok != 0 && l.ok != 0) {
+    if ((h.ok != 0) && (l.ok != 0)) {
         x.lo = -l.v;
         x.hi = h.v;
         x.ok = 1;
@@ -728,7 +728,7 @@ static int pb_behind(double b0, double b1, double b2, double b3,
 /* ---- the public function ------------------------------------------------ */
 cbx_status cbx_project_sphere_near(const cbx_proj *p, const double c[3], double r, double wn, cbx_box *out)
 {
-    if (pb_any_nan(p, c, r, wn)) {
+    if (pb_any_nan(p, c, r, wn) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
@@ -747,14 +747,14 @@ cbx_status cbx_project_sphere_near(const cbx_proj *p, const double c[3], double 
         ps_ax x0;
         ps_ax x1;
         ps_ax x2;
-        if (pb_behind(w0, w1, w2, wt, c0, c1, c2, r, wn)) {
+        if (pb_behind(w0, w1, w2, wt, c0, c1, c2, r, wn) != 0) {
             set_empty(out);
             return CBX_EMPTY;
         }
         x0 = pb_axis_of(p->m[0][0], p->m[0][1], p->m[0][2], p->m[0][3], w0, w1, w2, wt, c0, c1, c2, r, wn);
         x1 = pb_axis_of(p->m[1][0], p->m[1][1], p->m[1][2], p->m[1][3], w0, w1, w2, wt, c0, c1, c2, r, wn);
         x2 = pb_axis_of(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3], w0, w1, w2, wt, c0, c1, c2, r, wn);
-        if (x0.ok == 0 || x1.ok == 0 || x2.ok == 0) {
+        if ((x0.ok == 0) || (x1.ok == 0) || (x2.ok == 0)) {
             set_whole(out);
             return CBX_ERANGE;
         }

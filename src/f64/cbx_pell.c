@@ -221,15 +221,15 @@ static int pe_try(int up, double th, double tl, double a0, double a1, double a2,
                   double r20, double r21, double r22, double s0, double s1, double s2)
 {
     int ok = 0;
-    if (ps_span(th, tl, up != 0 ? th : tl)) {
-        ps_gap gs = pe_gap_at(up != 0 ? th : tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
+    if (ps_span(th, tl, (up != 0) ? th : tl) != 0) {
+        ps_gap gs = pe_gap_at((up != 0) ? th : tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
                               r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
-        cbx_iv ss = iv_add(gs.e, up != 0 ? gs.k : iv_neg(gs.k));
-        if (up != 0 ? ss.hi <= 0.0 : ss.lo >= 0.0) {
-            ps_gap gw = pe_gap_at(up != 0 ? tl : th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
+        cbx_iv ss = iv_add(gs.e, (up != 0) ? gs.k : iv_neg(gs.k));
+        if ((up != 0) ? (ss.hi <= 0.0) : (ss.lo >= 0.0)) {
+            ps_gap gw = pe_gap_at((up != 0) ? tl : th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
                                   r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
-            cbx_iv sw = iv_add(gw.e, up != 0 ? gw.k : iv_neg(gw.k));
-            ok = up != 0 ? sw.lo > 0.0 : sw.hi < 0.0;
+            cbx_iv sw = iv_add(gw.e, (up != 0) ? gw.k : iv_neg(gw.k));
+            ok = (up != 0) ? (sw.lo > 0.0) : (sw.hi < 0.0);
         }
     }
     return ok;
@@ -277,8 +277,8 @@ static ps_fin pe_find(int up, double t0, double a0, double a1, double a2, double
         if (ps_in(th, PS_B) && ps_in(tl, PS_B)
             && pe_try(up, th, tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
                       r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2)) {
-            f.v = up != 0 ? th : tl;
-            f.w = up != 0 ? tl : th;
+            f.v = (up != 0) ? th : tl;
+            f.w = (up != 0) ? tl : th;
             f.ok = 1;
             break;
         }
@@ -338,7 +338,7 @@ static ps_ax pe_axis_of(double a0, double a1, double a2, double a3,
                            r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
         ps_fin l = pe_find(0, q.lo, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2,
                            r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
-        if (h.ok != 0 && l.ok != 0) {
+        if ((h.ok != 0) && (l.ok != 0)) {
             x.lo = l.v;
             x.hi = h.v;
             x.ok = 1;
@@ -432,7 +432,7 @@ static int pe_dom_in(const cbx_proj *p, const double c[3], const double s[3], co
 cbx_status cbx_project_ellipsoid(const cbx_proj *p, const double center[3], const double radii[3],
                                  const double rot[3][3], cbx_box *out)
 {
-    if (pe_any_nan(p, center, radii, rot)) {
+    if (pe_any_nan(p, center, radii, rot) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
@@ -473,7 +473,7 @@ cbx_status cbx_project_ellipsoid(const cbx_proj *p, const double center[3], cons
                         r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
         x2 = pe_axis_of(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3], w0, w1, w2, wt, c0, c1, c2,
                         r00, r01, r02, r10, r11, r12, r20, r21, r22, s0, s1, s2);
-        if (x0.ok == 0 || x1.ok == 0 || x2.ok == 0) {
+        if ((x0.ok == 0) || (x1.ok == 0) || (x2.ok == 0)) {
             set_whole(out);
             return CBX_ERANGE;
         }

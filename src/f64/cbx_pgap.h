@@ -131,7 +131,7 @@ static inline ps_gap ps_gap_at(double t, double a0, double a1, double a2, double
  * round-to-nearest (ps_quad, clamped), and the ends where den is well
  * above 0, the ball clear of the camera plane (ps_candidate; ok 0 when
  * den is not well above 0 or an end is beyond 2^99). */
-typedef struct ps_qd { double h, sq, den; } ps_qd;
+typedef struct ps_qd { double h; double sq; double den; } ps_qd;
 
 /* The three coefficients from A = X(c), B = W(c), the linear parts a, b
  * and r2 = r^2 (the ellipsoid's candidate, src/f64/cbx_pell.c, passes its
@@ -191,7 +191,7 @@ static inline ps_qd ps_quad(double a0, double a1, double a2, double a3,
     return ps_coef(A, B, a0, a1, a2, b0, b1, b2, r2);
 }
 
-typedef struct ps_cand { double lo, hi; int ok; } ps_cand;
+typedef struct ps_cand { double lo; double hi; int ok; } ps_cand;
 
 /* The ends (h -+ sq) / den where den is well above 0 (ok 0 otherwise, or
  * when an end is beyond 2^99). */

@@ -73,10 +73,10 @@ static int pn_dom_in(const cbx_proj *p, const cbx_box *b, double wn)
     int r1 = ps_row_in(p->m[1][0], p->m[1][1], p->m[1][2], p->m[1][3]);
     int r2 = ps_row_in(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3]);
     int r3 = ps_row_in(p->m[3][0], p->m[3][1], p->m[3][2], p->m[3][3]);
-    int x0 = ps_in(b->lo[0], PS_M) && ps_in(b->hi[0], PS_M) && b->lo[0] <= b->hi[0];
-    int x1 = ps_in(b->lo[1], PS_M) && ps_in(b->hi[1], PS_M) && b->lo[1] <= b->hi[1];
-    int x2 = ps_in(b->lo[2], PS_M) && ps_in(b->hi[2], PS_M) && b->lo[2] <= b->hi[2];
-    int w = wn >= PN_WLO && wn <= PN_WHI;
+    int x0 = ps_in(b->lo[0], PS_M) && ps_in(b->hi[0], PS_M) && (b->lo[0] <= b->hi[0]);
+    int x1 = ps_in(b->lo[1], PS_M) && ps_in(b->hi[1], PS_M) && (b->lo[1] <= b->hi[1]);
+    int x2 = ps_in(b->lo[2], PS_M) && ps_in(b->hi[2], PS_M) && (b->lo[2] <= b->hi[2]);
+    int w = (wn >= PN_WLO) && (wn <= PN_WHI);
     return r0 && r1 && r2 && r3 && x0 && x1 && x2 && w;
 }
 
@@ -179,12 +179,12 @@ static pn_s pn_ratio(double a, double b)
 {
     pn_s r;
     double ab = cbx_abs(b);
-    double an = b < 0.0 ? -a : a;
+    double an = (b < 0.0) ? -a : a;
     r.s = 0.0;
     r.ok = 0;
     if (ab >= 0x1p-400) {
         cbx_iv q = iv_div(iv_pt(an), iv_pt(ab));
-        if (ps_in(q.lo, PS_B)) {
+        if (ps_in(q.lo, PS_B) != 0) {
             r.s = q.lo;
             r.ok = 1;
         }
@@ -204,7 +204,7 @@ static int pn_cert_at(double t, double aj, double bj, double a0, double a1, doub
                       double l0, double h0, double l1, double h1, double l2, double h2, double wn)
 {
     pn_s r = pn_ratio(aj, bj);
-    return r.ok != 0 && r.s <= t
+    return (r.ok != 0) && (r.s <= t)
            && pn_cert(t, r.s, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
 }
 
@@ -228,17 +228,19 @@ static int pn_sound(double t, int e, double a0, double a1, double a2, double a3,
         ok = pn_cert_at(t, a1, b1, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
     } else if (e == 2) {
         ok = pn_cert_at(t, a2, b2, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
+    } else {
+        /* e is 0, 1 or 2 (precondition); nothing to certify otherwise */
     }
     if (!ok) {
         ok = pn_cert(t, t, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
     }
-    if (!ok && e != 0) {
+    if (!ok && (e != 0)) {
         ok = pn_cert_at(t, a0, b0, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
     }
-    if (!ok && e != 1) {
+    if (!ok && (e != 1)) {
         ok = pn_cert_at(t, a1, b1, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
     }
-    if (!ok && e != 2) {
+    if (!ok && (e != 2)) {
         ok = pn_cert_at(t, a2, b2, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
     }
     return ok;
@@ -267,7 +269,7 @@ static int pn_wit(double t, double y0, double y1, double y2, double a0, double a
 /* A vertex: X / W there (v, rounded), the point, the axis j along which a
  * witness moves toward larger W and the coordinate g it moves toward, e
  * the axis of its edge (3 for a corner), ok 0 for none. */
-typedef struct pn_vx { double v, x0, x1, x2, g; int j, e, ok; } pn_vx;
+typedef struct pn_vx { double v; double x0; double x1; double x2; double g; int j; int e; int ok; } pn_vx;
 
 /*@ predicate pn_vok(pn_vx w, real l0, real h0, real l1, real h1, real l2, real h2) =
       w.ok != 0 ==>
@@ -297,7 +299,7 @@ static double pn_rn(double m0, double m1, double m2, double m3, double x0, doubl
 static pn_vx pn_best(pn_vx c, pn_vx w, double l0, double h0, double l1, double h1, double l2, double h2)
 {
     (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
-    return w.ok != 0 && (c.ok == 0 || w.v > c.v) ? w : c;
+    return ((w.ok != 0) && ((c.ok == 0) || (w.v > c.v))) ? w : c;
 }
 
 /* The corner (x0, x1, x2), if W >= wn there (in round-to-nearest); its
@@ -328,7 +330,7 @@ static pn_vx pn_corner(double a0, double a1, double a2, double a3, double b0, do
     w.ok = 0;
     if (W >= wn) {
         cbx_iv q = iv_div(iv_pt(X), iv_pt(W));
-        if (ps_in(q.hi, PS_C)) {
+        if (ps_in(q.hi, PS_C) != 0) {
             w.v = q.hi;
             w.ok = 1;
         }
@@ -343,8 +345,8 @@ static pn_vx pn_corner(double a0, double a1, double a2, double a3, double b0, do
 */
 static double pn_between(double x, double p, double q)
 {
-    double lo = p < q ? p : q;
-    double hi = p < q ? q : p;
+    double lo = (p < q) ? p : q;
+    double hi = (p < q) ? q : p;
     double r = x;
     if (!(r >= lo)) {
         r = lo;
@@ -392,7 +394,7 @@ static pn_vx pn_cross(double a0, double a1, double a2, double a3, double b0, dou
     w.x0 = x0;
     w.x1 = x1;
     w.x2 = x2;
-    w.g = j == 0 ? i0 : j == 1 ? i1 : i2;
+    w.g = (j == 0) ? i0 : (j == 1) ? i1 : i2;
     w.j = j;
     w.e = j;
     w.ok = ps_in(q.hi, PS_C);
@@ -425,17 +427,17 @@ static pn_vx pn_edge(double a0, double a1, double a2, double a3, double b0, doub
     w.j = 0;
     w.e = 3;
     w.ok = 0;
-    if (wp < wn && wq >= wn) {
+    if ((wp < wn) && (wq >= wn)) {
         double num = ps_sub(wn, wp);
         double den = ps_sub(wq, wp);
-        if (num >= 0.0 && den >= 0x1p-400) {
+        if ((num >= 0.0) && (den >= 0x1p-400)) {
             w = pn_cross(a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn, p0, p1, p2, q0, q1, q2, j,
                          num, den);
         }
-    } else if (wq < wn && wp >= wn) {
+    } else if ((wq < wn) && (wp >= wn)) {
         double num = ps_sub(wn, wq);
         double den = ps_sub(wp, wq);
-        if (num >= 0.0 && den >= 0x1p-400) {
+        if ((num >= 0.0) && (den >= 0x1p-400)) {
             w = pn_cross(a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn, q0, q1, q2, p0, p1, p2, j,
                          num, den);
         }
@@ -472,9 +474,9 @@ static pn_vx pn_cands(double a0, double a1, double a2, double a3, double b0, dou
         loop variant 8 - k;
     */
     for (k = 0; k < 8; k++) {   /* corner k, and its edges toward the corners with one more bit set */
-        double x0 = (k & 1) != 0 ? h0 : l0;
-        double x1 = (k & 2) != 0 ? h1 : l1;
-        double x2 = (k & 4) != 0 ? h2 : l2;
+        double x0 = ((k & 1) != 0) ? h0 : l0;
+        double x1 = ((k & 2) != 0) ? h1 : l1;
+        double x2 = ((k & 4) != 0) ? h2 : l2;
         pn_vx w = pn_corner(a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn, x0, x1, x2, jc, gc);
         c = pn_best(c, w, l0, h0, l1, h1, l2, h2);
         if ((k & 1) == 0) {
@@ -494,7 +496,7 @@ static pn_vx pn_cands(double a0, double a1, double a2, double a3, double b0, dou
 }
 
 /* ---- the search --------------------------------------------------------- */
-typedef struct pn_pt { double y0, y1, y2; } pn_pt;
+typedef struct pn_pt { double y0; double y1; double y2; } pn_pt;
 
 /* The candidate's point moved the fraction frac of the way to its target
  * along its axis (toward larger W). */
@@ -508,14 +510,14 @@ typedef struct pn_pt { double y0, y1, y2; } pn_pt;
 static pn_pt pn_nudge(pn_vx w, double frac, double l0, double h0, double l1, double h1, double l2, double h2)
 {
     pn_pt y;
-    double x = w.j == 0 ? w.x0 : w.j == 1 ? w.x1 : w.x2;
+    double x = (w.j == 0) ? w.x0 : (w.j == 1) ? w.x1 : w.x2;
     double m;
     (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
     /*@ assert xr: -PS_M <= x <= PS_M && -PS_M <= w.g <= PS_M; */
     m = pn_between(ps_add(x, ps_mul(frac, ps_sub(w.g, x))), x, w.g);
-    y.y0 = w.j == 0 ? m : w.x0;
-    y.y1 = w.j == 1 ? m : w.x1;
-    y.y2 = w.j == 2 ? m : w.x2;
+    y.y0 = (w.j == 0) ? m : w.x0;
+    y.y1 = (w.j == 1) ? m : w.x1;
+    y.y2 = (w.j == 2) ? m : w.x2;
     return y;
 }
 
@@ -531,8 +533,8 @@ static pn_pt pn_nudge(pn_vx w, double frac, double l0, double h0, double l1, dou
 static double pn_rate(pn_vx c, double b0, double b1, double b2,
                       double l0, double h0, double l1, double h1, double l2, double h2)
 {
-    double x = c.j == 0 ? c.x0 : c.j == 1 ? c.x1 : c.x2;
-    double bj = c.j == 0 ? b0 : c.j == 1 ? b1 : b2;
+    double x = (c.j == 0) ? c.x0 : (c.j == 1) ? c.x1 : c.x2;
+    double bj = (c.j == 0) ? b0 : (c.j == 1) ? b1 : b2;
     (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
     /*@ assert xr: -PS_M <= x <= PS_M && -PS_M <= c.g <= PS_M; */
     return ps_mul(bj, ps_sub(c.g, x));
@@ -570,7 +572,7 @@ static pn_wp pn_witness(pn_vx c, double b0, double b1, double b2, double b3,
     for (k = 0; k < 17; k++) {
         pn_pt y = pn_nudge(c, frac, l0, h0, l1, h1, l2, h2);
         cbx_iv w = ps_e_at(0.0, b0, b1, b2, b3, b0, b1, b2, b3, y.y0, y.y1, y.y2);
-        double nx = frac == 0.0 ? 0x1p-60 : pn_between(cbx_mul_rn(frac, 16.0), 0.0, 1.0);
+        double nx = (frac == 0.0) ? 0x1p-60 : pn_between(cbx_mul_rn(frac, 16.0), 0.0, 1.0);
         if (w.lo >= wn) {
             r.y = y;
             r.ok = 1;
@@ -578,7 +580,7 @@ static pn_wp pn_witness(pn_vx c, double b0, double b1, double b2, double b3,
         }
         if (frac == 0.0) {
             double gs = ps_frac(w, wn, pn_rate(c, b0, b1, b2, l0, h0, l1, h1, l2, h2));
-            nx = gs > nx ? gs : nx;
+            nx = (gs > nx) ? gs : nx;
         }
         frac = nx;
     }
@@ -605,7 +607,7 @@ static int pn_try(double th, double tl, int e, pn_pt y, double a0, double a1, do
            && pn_wit(tl, y.y0, y.y1, y.y2, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
 }
 
-typedef struct pn_fin { double v, w; int ok; } pn_fin;
+typedef struct pn_fin { double v; double w; int ok; } pn_fin;
 
 /* The upper end from the candidate w: v with X <= v W at every point in
  * front, w with some point in front above it, v - w <= ps_tau(v). */
@@ -640,7 +642,7 @@ static pn_fin pn_find(pn_vx c, double a0, double a1, double a2, double a3,
     for (k = 0; k < PN_TRIES && d <= 0x1p90 && y.ok != 0; k++) {
         double th = t0 + d;
         double tw = ps_sub(t0, ps_mul(d, 64.0));   /* the witness's room: only th is returned */
-        double tl = ps_in(th, PS_B) && ps_in(tw, PS_B) && ps_span(th, tw, th) ? tw : t0 - d;
+        double tl = (ps_in(th, PS_B) && ps_in(tw, PS_B) && ps_span(th, tw, th)) ? tw : (t0 - d);
         if (ps_in(th, PS_B) && ps_in(tl, PS_B)
             && pn_try(th, tl, c.e, y.y, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn)) {
             f.v = th;
@@ -673,10 +675,10 @@ static ps_ax pn_axis_of(double a0, double a1, double a2, double a3, double b0, d
     x.lo = 0.0;
     x.hi = 0.0;
     x.ok = 0;
-    if (ch.ok != 0 && cl.ok != 0) {
+    if ((ch.ok != 0) && (cl.ok != 0)) {
         pn_fin h = pn_find(ch, a0, a1, a2, a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
         pn_fin l = pn_find(cl, -a0, -a1, -a2, -a3, b0, b1, b2, b3, l0, h0, l1, h1, l2, h2, wn);
-        if (h.ok != 0 && l.ok != 0) {
+        if ((h.ok != 0) && (l.ok != 0)) {
             x.lo = -l.v;
             x.hi = h.v;
             x.ok = 1;
@@ -723,13 +725,15 @@ static pn_dir pn_dir_of(double b0, double b1, double b2,
     double s1 = ps_mul(cbx_abs(b1), ps_sub(h1, l1));
     double s2 = ps_mul(cbx_abs(b2), ps_sub(h2, l2));
     r.j = 0;
-    r.g = b0 >= 0.0 ? h0 : l0;
-    if (s1 > s0 && s1 >= s2) {
+    r.g = (b0 >= 0.0) ? h0 : l0;
+    if ((s1 > s0) && (s1 >= s2)) {
         r.j = 1;
-        r.g = b1 >= 0.0 ? h1 : l1;
+        r.g = (b1 >= 0.0) ? h1 : l1;
     } else if (s2 > s0) {   /* then s2 > s1 too: s1 <= s0 here */
         r.j = 2;
-        r.g = b2 >= 0.0 ? h2 : l2;
+        r.g = (b2 >= 0.0) ? h2 : l2;
+    } else {
+        /* axis 0 has the widest span: r as initialised */
     }
     return r;
 }
@@ -737,11 +741,11 @@ static pn_dir pn_dir_of(double b0, double b1, double b2,
 /* ---- the public function ------------------------------------------------ */
 cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn, cbx_box *out)
 {
-    if (ps_proj_nan(p) | box_any_nan(in) | cbx_is_nan(wn)) {
+    if ((ps_proj_nan(p) | box_any_nan(in) | cbx_is_nan(wn)) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
-    if (box_any_empty(in)) {
+    if (box_any_empty(in) != 0) {
         set_empty(out);
         return CBX_EMPTY;
     }
@@ -764,7 +768,7 @@ cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn,
         ps_ax x1;
         ps_ax x2;
         pn_dir dc;
-        if (pn_behind(w0, w1, w2, wt, l0, h0, l1, h1, l2, h2, wn)) {
+        if (pn_behind(w0, w1, w2, wt, l0, h0, l1, h1, l2, h2, wn) != 0) {
             set_empty(out);
             return CBX_EMPTY;
         }
@@ -775,7 +779,7 @@ cbx_status cbx_project_box_near(const cbx_proj *p, const cbx_box *in, double wn,
                         l0, h0, l1, h1, l2, h2, wn, dc.j, dc.g);
         x2 = pn_axis_of(p->m[2][0], p->m[2][1], p->m[2][2], p->m[2][3], w0, w1, w2, wt,
                         l0, h0, l1, h1, l2, h2, wn, dc.j, dc.g);
-        if (x0.ok == 0 || x1.ok == 0 || x2.ok == 0) {
+        if ((x0.ok == 0) || (x1.ok == 0) || (x2.ok == 0)) {
             set_whole(out);
             return CBX_ERANGE;
         }

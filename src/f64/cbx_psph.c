@@ -95,13 +95,13 @@ static int ps_try(int up, double th, double tl, double a0, double a1, double a2,
     /* up: sound at th, tight at tl; down: sound at tl, tight at th.  The
      * span first, the tight side only where the end is sound (most tries
      * fail on soundness: one enclosure instead of two). */
-    if (ps_span(th, tl, up != 0 ? th : tl)) {
-        ps_gap gs = ps_gap_at(up != 0 ? th : tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-        cbx_iv ss = iv_add(gs.e, up != 0 ? gs.k : iv_neg(gs.k));
-        if (up != 0 ? ss.hi <= 0.0 : ss.lo >= 0.0) {
-            ps_gap gw = ps_gap_at(up != 0 ? tl : th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-            cbx_iv sw = iv_add(gw.e, up != 0 ? gw.k : iv_neg(gw.k));
-            ok = up != 0 ? sw.lo > 0.0 : sw.hi < 0.0;
+    if (ps_span(th, tl, (up != 0) ? th : tl) != 0) {
+        ps_gap gs = ps_gap_at((up != 0) ? th : tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+        cbx_iv ss = iv_add(gs.e, (up != 0) ? gs.k : iv_neg(gs.k));
+        if ((up != 0) ? (ss.hi <= 0.0) : (ss.lo >= 0.0)) {
+            ps_gap gw = ps_gap_at((up != 0) ? tl : th, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
+            cbx_iv sw = iv_add(gw.e, (up != 0) ? gw.k : iv_neg(gw.k));
+            ok = (up != 0) ? (sw.lo > 0.0) : (sw.hi < 0.0);
         }
     }
     return ok;
@@ -146,8 +146,8 @@ static ps_fin ps_find(int up, double t0, double a0, double a1, double a2, double
         double tl = t0 - d;
         if (ps_in(th, PS_B) && ps_in(tl, PS_B)
             && ps_try(up, th, tl, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r)) {
-            f.v = up != 0 ? th : tl;
-            f.w = up != 0 ? tl : th;
+            f.v = (up != 0) ? th : tl;
+            f.w = (up != 0) ? tl : th;
             f.ok = 1;
             break;
         }
@@ -177,7 +177,7 @@ static ps_ax ps_axis_of(double a0, double a1, double a2, double a3,
     if (q.ok != 0) {
         ps_fin h = ps_find(1, q.hi, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
         ps_fin l = ps_find(0, q.lo, a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, r);
-        if (h.ok != 0 && l.ok != 0) {
+        if ((h.ok != 0) && (l.ok != 0)) {
             x.lo = l.v;
             x.hi = h.v;
             x.ok = 1;
@@ -210,7 +210,7 @@ static int ps_in_front(double b0, double b1, double b2, double b3, double c0, do
 /* ---- the public function ------------------------------------------------ */
 cbx_status cbx_project_sphere(const cbx_proj *p, const double c[3], double r, cbx_box *out)
 {
-    if (ps_any_nan(p, c, r)) {
+    if (ps_any_nan(p, c, r) != 0) {
         set_whole(out);
         return CBX_EINVAL;
     }
@@ -248,7 +248,7 @@ cbx_status cbx_project_sphere(const cbx_proj *p, const double c[3], double r, cb
         x0 = ps_axis_of(a00, a01, a02, a03, w0, w1, w2, wt, c0, c1, c2, r);
         x1 = ps_axis_of(a10, a11, a12, a13, w0, w1, w2, wt, c0, c1, c2, r);
         x2 = ps_axis_of(a20, a21, a22, a23, w0, w1, w2, wt, c0, c1, c2, r);
-        if (x0.ok == 0 || x1.ok == 0 || x2.ok == 0) {
+        if ((x0.ok == 0) || (x1.ok == 0) || (x2.ok == 0)) {
             set_whole(out);
             return CBX_ERANGE;
         }

@@ -45,7 +45,7 @@
 static cbx_dd eft_sum(double a, double b)
 {
     cbx_dd r;
-    if (a >= -0x1p1019 && a <= 0x1p1019 && b >= -0x1p1019 && b <= 0x1p1019) {
+    if ((a >= -0x1p1019) && (a <= 0x1p1019) && (b >= -0x1p1019) && (b <= 0x1p1019)) {
         return cbx_two_sum(a, b);
     }
     r.hi = a;
@@ -84,19 +84,19 @@ static cbx_vec8 pass8(cbx_vec8 z)
 */
 static int decide(cbx_vec8 z)
 {
-    if (z.v0 == 0.0 && z.v1 == 0.0 && z.v2 == 0.0 && z.v3 == 0.0 && z.v4 == 0.0
-        && z.v5 == 0.0 && z.v6 == 0.0) {
-        return z.v7 >= 0.0 ? 1 : -1;
+    if ((z.v0 == 0.0) && (z.v1 == 0.0) && (z.v2 == 0.0) && (z.v3 == 0.0) && (z.v4 == 0.0)
+        && (z.v5 == 0.0) && (z.v6 == 0.0)) {
+        return (z.v7 >= 0.0) ? 1 : -1;
     }
     double s = cbx_abs(z.v7);
-    if (!(s >= 0x1p-1060 && s <= 0x1p1020)) {
+    if (!((s >= 0x1p-1060) && (s <= 0x1p1020))) {
         return 0;
     }
     double p = cbx_mul_rn(s, 0x1p-4);
     /*@ assert pb: p <= s * 0x1p-4 + 0x1p-57 * s + 0x1p-1074; */
-    if (cbx_abs(z.v0) <= p && cbx_abs(z.v1) <= p && cbx_abs(z.v2) <= p && cbx_abs(z.v3) <= p
-        && cbx_abs(z.v4) <= p && cbx_abs(z.v5) <= p && cbx_abs(z.v6) <= p) {
-        return z.v7 > 0.0 ? 1 : -1;
+    if ((cbx_abs(z.v0) <= p) && (cbx_abs(z.v1) <= p) && (cbx_abs(z.v2) <= p) && (cbx_abs(z.v3) <= p)
+        && (cbx_abs(z.v4) <= p) && (cbx_abs(z.v5) <= p) && (cbx_abs(z.v6) <= p)) {
+        return (z.v7 > 0.0) ? 1 : -1;
     }
     return 0;
 }
@@ -163,7 +163,7 @@ static double neighbour(double c, int dn)
 */
 static int eft_ok(double m, double v)
 {
-    if (m == 0.0 || v == 0.0) {
+    if ((m == 0.0) || (v == 0.0)) {
         return 1;
     }
     double p = cbx_mul_rn(m, v);
@@ -210,11 +210,11 @@ static cand tighten_fast(cbx_vec8 y)
     if (d > 0) {
         res.c = c;
         res.ok = 1;
-    } else if (d < 0 && c >= -0x1p1017 && c <= 0x1p1017) {
+    } else if ((d < 0) && (c >= -0x1p1017) && (c <= 0x1p1017)) {
         double p = neighbour(c, 1);
         cbx_dd h = eft_sum(c, -p);
         double a = cbx_abs(w.v7);
-        if (h.lo == 0.0 && a >= 0x1p-1060 && a <= 0x1p1000 && cbx_mul_rn(a, 0x1.cp0) <= h.hi) {
+        if ((h.lo == 0.0) && (a >= 0x1p-1060) && (a <= 0x1p1000) && (cbx_mul_rn(a, 0x1.cp0) <= h.hi)) {
             /*@ assert w2: vsum(y) >= p; */
             res.c = p;
             res.ok = 1;
@@ -237,23 +237,23 @@ static double tighten_core(double r, cbx_vec8 y)
     double best = r;
     cand f = tighten_fast(y);
     if (f.ok != 0) {
-        return f.c > r ? f.c : r;
+        return (f.c > r) ? f.c : r;
     }
     double c = approx(y);
-    if (!(c >= -0x1p1017 && c <= 0x1p1017)) {
+    if (!((c >= -0x1p1017) && (c <= 0x1p1017))) {
         return r;
     }
-    if (certify(y, c)) {
+    if (certify(y, c) != 0) {
         if (c > best) {
             best = c;
         }
         double u = neighbour(c, 0);
-        if (u >= -0x1p1018 && u <= 0x1p1018 && u > best && certify(y, u)) {
+        if ((u >= -0x1p1018) && (u <= 0x1p1018) && (u > best) && certify(y, u)) {
             best = u;
         }
     } else {
         double d = neighbour(c, 1);
-        if (d >= -0x1p1018 && d <= 0x1p1018 && d > best && certify(y, d)) {
+        if ((d >= -0x1p1018) && (d <= 0x1p1018) && (d > best) && certify(y, d)) {
             best = d;
         }
     }
@@ -300,7 +300,7 @@ static int fast_ok(double m, double v)
     /*@ assert c2: (m == 0 || v == 0) ==> z + z + n >= 2; */
     /*@ assert c3: (0x1p-967 <= \abs(m*v) <= 0x1p1013) ==> z + z + n >= 2; */
     /*@ assert c4: tprod(m, v) ==> (m == 0 || v == 0 || (0x1p-967 <= \abs(m*v) <= 0x1p1013)); */
-    return z + z + n >= 2;
+    return (z + z + n) >= 2;
 }
 
 /* Six doubles of magnitude at most M summed to nearest: five additions,
@@ -379,7 +379,7 @@ static void rn_err(double m, double v, double hi, double lo) { (void)m; (void)v;
 
 /* The three products of an end split exactly (two_prod), when all three
  * are in dot_sum's range; ok == 0 otherwise. */
-typedef struct prods { cbx_dd p0, p1, p2; int ok; } prods;
+typedef struct prods { cbx_dd p0; cbx_dd p1; cbx_dd p2; int ok; } prods;
 
 /*@ requires fin: map_fin(m0, m1, m2, t) && \is_finite(v0) && \is_finite(v1) && \is_finite(v2);
     requires dom: in_dom(m0, v0) && in_dom(m1, v1) && in_dom(m2, v2);
@@ -397,8 +397,8 @@ static prods dot_prods(double m0, double m1, double m2, double t, double v0, dou
     prods q;
     q.p0.hi = 0.0; q.p0.lo = 0.0; q.p1 = q.p0; q.p2 = q.p0;
     q.ok = 0;
-    if (fast_ok(m0, v0) + fast_ok(m1, v1) + fast_ok(m2, v2)
-        + (t >= -0x1p1015) + (t <= 0x1p1015) != 5) {
+    if ((fast_ok(m0, v0) + fast_ok(m1, v1) + fast_ok(m2, v2)
+        + (t >= -0x1p1015) + (t <= 0x1p1015)) != 5) {
         return q;
     }
     q.p0 = cbx_two_prod(m0, v0);
@@ -470,7 +470,7 @@ static cand dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
     cbx_dd h = cbx_two_sum(c, -p);
     double g = cbx_mul_rn(cbx_sub_rn(d, e), 0x1.2p0);
     double nd = -d; /* not in the comparison: -d inside an int sum made Why3 reject the goals */
-    int dn = (e < nd) + (h.lo == 0.0) + (g <= h.hi) == 3;
+    int dn = ((e < nd) + (h.lo == 0.0) + (g <= h.hi)) == 3;
     /*@ assert w2: dn != 0 ==> p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t >= p; */
     /*@ assert z: mx == 0 ==> s3.hi == p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t; */
     /* the lower end that holds in every case */
@@ -490,13 +490,13 @@ static cand dot_sum(cbx_dd p0, cbx_dd p1, cbx_dd p2, double t)
     /*@ assert fn: p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t - f
                    <= 0x1p-50 * \abs(p0.hi + p0.lo + p1.hi + p1.lo + p2.hi + p2.lo + t)
                       + 0x1.1p-97 * (\abs(t) + \abs(p0.hi) + \abs(p1.hi) + \abs(p2.hi)) + 0x1p-1057; */
-    res.ok = (e >= d) + dn + (mx == 0.0) != 0;
+    res.ok = ((e >= d) + dn + (mx == 0.0)) != 0;
     if (res.ok == 0) {
         res.c = f;
         return res;
     }
-    double x = e >= d ? c : p;
-    double y = mx == 0.0 ? s3.hi : x;
+    double x = (e >= d) ? c : p;
+    double y = (mx == 0.0) ? s3.hi : x;
     res.c = cbx_max2(y, f);
     return res;
 }
@@ -525,7 +525,7 @@ static terms exact_terms(double m0, double m1, double m2, double t,
     cbx_dd q0 = cbx_two_prod(m0, v0);
     cbx_dd q1 = cbx_two_prod(m1, v1);
     cbx_dd q2 = cbx_two_prod(m2, v2);
-    if (neg) {
+    if (neg != 0) {
         r.y.v0 = -t; r.y.v1 = -q0.lo; r.y.v2 = -q1.lo; r.y.v3 = -q2.lo;
         r.y.v4 = -q0.hi; r.y.v5 = -q1.hi; r.y.v6 = -q2.hi;
     } else {
@@ -557,7 +557,7 @@ static double tighten_lo(double r, double m0, double m1, double m2, double t,
         cand x = dot_sum(q.p0, q.p1, q.p2, t);
         /*@ assert hs: \abs(q.p0.hi) + \abs(q.p1.hi) + \abs(q.p2.hi)
                        <= 0x1.0000000000002p0 * (\abs(m0*v0) + \abs(m1*v1) + \abs(m2*v2)); */
-        b = x.c > r ? x.c : r;
+        b = (x.c > r) ? x.c : r;
         if (x.ok != 0) {
             return b;
         }
@@ -590,7 +590,7 @@ static double tighten_hi(double r, double m0, double m1, double m2, double t,
         /*@ assert hs: \abs(q.p0.hi) + \abs(q.p1.hi) + \abs(q.p2.hi)
                        <= 0x1.0000000000002p0 * (\abs(m0*v0) + \abs(m1*v1) + \abs(m2*v2)); */
         double y = -f.c;
-        b = y < r ? y : r;
+        b = (y < r) ? y : r;
         if (f.ok != 0) {
             return b;
         }
@@ -661,7 +661,7 @@ static void tight_hi_sound(double lo, double hi, double c, double m0, double m1,
     (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2; (void)v0; (void)v1; (void)v2;
 }
 
-typedef struct tight_result { double lo, hi; } tight_result;
+typedef struct tight_result { double lo; double hi; } tight_result;
 
 /* One axis: tighten each finite end of a sound axis at its vertex. */
 /*@ requires sound: axis_sound_s(lo, hi, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
@@ -680,7 +680,7 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
     if (!cbx_fin4(m0, m1, m2, t)) {
         return r;
     }
-    if (cbx_is_fin(lo)) {
+    if (cbx_is_fin(lo) != 0) {
         end_result w0 = vertex_lo(m0, l0, h0);
         end_result w1 = vertex_lo(m1, l1, h1);
         end_result w2 = vertex_lo(m2, l2, h2);
@@ -693,7 +693,7 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
             }
         }
     }
-    if (cbx_is_fin(hi)) {
+    if (cbx_is_fin(hi) != 0) {
         end_result w0 = vertex_hi(m0, l0, h0);
         end_result w1 = vertex_hi(m1, l1, h1);
         end_result w2 = vertex_hi(m2, l2, h2);
@@ -722,7 +722,7 @@ static tight_result tight_axis(double lo, double hi, double m0, double m1, doubl
 */
 static double vsel_lo(double m, double l, double h)
 {
-    double v = m >= 0.0 ? l : h;
+    double v = (m >= 0.0) ? l : h;
     /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
     /* the lemmas on v itself: no product of v to rewrite as one of l */
     if (m > 0.0) {
@@ -753,7 +753,7 @@ static double vsel_lo(double m, double l, double h)
 */
 static double vsel_hi(double m, double l, double h)
 {
-    double v = m >= 0.0 ? h : l;
+    double v = (m >= 0.0) ? h : l;
     /*@ assert z: m == 0 ==> \forall real p; m*v == m*p; */
     /* the lemmas on v itself: no product of v to rewrite as one of h */
     if (m > 0.0) {
@@ -895,7 +895,7 @@ static cbx_status tight_box_slow(const cbx_affine *a, const cbx_box *in, cbx_box
     double a22 = a->m[2][2];
     double a23 = a->m[2][3];
     cbx_status st = cbx_transform_box(a, in, out);
-    if (st != CBX_OK && st != CBX_ERANGE) {
+    if ((st != CBX_OK) && (st != CBX_ERANGE)) {
         return st;
     }
     tight_result r0 = tight_axis(out->lo[0], out->hi[0], a00, a01, a02, a03, l0, h0, l1, h1, l2, h2);
