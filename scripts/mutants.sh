@@ -3,8 +3,9 @@
 #
 #   bash scripts/mutants.sh [ID...]      (no ID: every mutant of the list)
 #
-# The checkout's include/, src/, specs/, tests/, examples/, tools/, Makefile and
-# scripts/testutil.sh (never .git or build/) are copied into a scratch directory (mktemp -d).  specs/ is copied
+# The checkout's include/, src/, specs/, tests/, examples/, tools/, Makefile,
+# scripts/testutil.sh and scripts/exactlibs.sh (never .git or build/) are
+# copied into a scratch directory (mktemp -d).  specs/ is copied
 # because the Makefile lists specs/cbx_spec.h among the library's
 # prerequisites; nothing under specs/ is ever mutated.  The pristine copy is
 # built and tested once (it must pass); then, for each mutant of
@@ -163,9 +164,10 @@ for d in include src specs tests examples tools bench; do
     cp -pR "$ROOT/$d" "$BASE/$d"
 done
 cp -p "$ROOT/Makefile" "$BASE/Makefile"
-# the Makefile reads its list of test oracles from scripts/testutil.sh
+# the Makefile reads its list of test oracles from scripts/testutil.sh and
+# the link flags of GMP and MPFR from scripts/exactlibs.sh
 mkdir -p "$BASE/scripts"
-cp -p "$ROOT/scripts/testutil.sh" "$BASE/scripts/testutil.sh"
+cp -p "$ROOT/scripts/testutil.sh" "$ROOT/scripts/exactlibs.sh" "$BASE/scripts/"
 # tests/data/gltf/escape.bin is a symbolic link to ../../../README.md (a
 # uri that leaves its folder through a link): it must resolve in the copy
 cp -p "$ROOT/README.md" "$BASE/README.md"

@@ -127,8 +127,8 @@ case_ qdot-term-widened src/f64/cbx_quat.h q_dot proofs/trs.c one,rng,p,srng,s,n
 # 17. a projected ball's upper end: the soundness check dropped (unsound:
 #    the end is no longer shown above the image)
 case_ psph-hi-unchecked src/f64/cbx_psph.c ps_try proofs/psph.c hi,lo ensures_hi \
-  "        if (up != 0 ? ss.hi <= 0.0 : ss.lo >= 0.0) {" \
-  "        if (up != 0 ? 1 : ss.lo >= 0.0) {" - &
+  "        if ((up != 0) ? (ss.hi <= 0.0) : (ss.lo >= 0.0)) {" \
+  "        if ((up != 0) ? 1 : (ss.lo >= 0.0)) {" - &
 # 18. a projected ball's tightness: the span allowed twice as wide (still
 #    sound; the 2^-20 postcondition must fail)
 case_ psph-span-doubled src/f64/cbx_paff.h ps_span proofs/psph.c w,q,span ensures_span \
@@ -183,8 +183,8 @@ case_ tight-dot-pred-unpadded src/f64/cbx_tight.c dot_sum proofs/all.c w2,z,kl,k
 # 28. the tight mode's fast path: the lower end's vertex taken at the
 #    other end of the column (the column property must fail)
 case_ tight-vertex-swapped src/f64/cbx_tight.c vsel_lo proofs/all.c z,ip,dp,tp,in,dn,tn,m0,m1,t0,col,tm,tg,fin,val ensures_col \
-  "    double v = m >= 0.0 ? l : h;" \
-  "    double v = m >= 0.0 ? h : l;" - &
+  "    double v = (m >= 0.0) ? l : h;" \
+  "    double v = (m >= 0.0) ? h : l;" - &
 # 29. the tight mode's fast path replaced by cbx_transform_box (sound, the
 #    same status and behaviors; its ends are not within the tight mode's
 #    gap: the accuracy postconditions must fail)
