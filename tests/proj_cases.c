@@ -454,6 +454,113 @@ void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap
     }
 }
 
+static void tc_set_box(cbx_box *b, double l0, double h0, double l1, double h1, double l2, double h2)
+{
+    b->lo[0] = l0; b->hi[0] = h0;
+    b->lo[1] = l1; b->hi[1] = h1;
+    b->lo[2] = l2; b->hi[2] = h2;
+}
+
+void tc_box_hard(double P[4][4], cbx_box *b, double *wn, void (*mid)(void), tc_run run)
+{
+    static const double bad_wn[] = {0.0, -0.0, -1.0, 0x1p-101, 0x1p121, INFINITY, -INFINITY};
+    int k;
+    /* a box straight ahead, in front; across the near plane; behind */
+    tc_identity_camera(P);
+    tc_set_box(b, -1, 1, -1, 1, -12, -8); *wn = 0.125;
+    run("box ahead", CBX_OK, NULL);
+    tc_set_box(b, -1, 1, -1, 1, -4, 4);
+    run("box across the near plane (the camera inside)", CBX_OK, NULL);
+    tc_set_box(b, -1, 1, -1, 1, 1, 4);
+    run("box behind the camera", CBX_EMPTY, "a box behind the camera without CBX_EMPTY");
+    tc_set_box(b, -1, 1, -1, 1, -0.125, 4);
+    run("box with a face on the near plane", CBX_OK, NULL);
+    tc_set_box(b, -1, 1, -1, 1, -0.0625, 4);
+    run("box just behind the near plane", CBX_OK, NULL);
+    tc_set_box(b, 1, 1, 1, 1, -0.125, -0.125);
+    run("a point on the near plane", CBX_OK, NULL);
+    tc_set_box(b, -1e6, 1e6, -1e6, 1e6, -1e6, 1e6);
+    run("huge box around the camera", CBX_OK, NULL);
+    tc_set_box(b, 1e3, 1e3 + 1e-9, 1e3, 1e3 + 1e-9, -1e4, -1e4 + 1e-9);
+    run("tiny box far away (a point in binary32)", CBX_OK, NULL);
+    tc_set_box(b, 1e3, 1e3 + 1e-3, 1e3, 1e3 + 1e-3, -1e4, -1e4 + 1e-3);
+    run("small box far away", CBX_OK, NULL);
+    /* NaN in each input, an empty box, bad near planes */
+    for (k = 0; k < 23; k++) {
+        tc_identity_camera(P);
+        tc_set_box(b, -1, 1, -1, 1, -4, 4); *wn = 0.125;
+        if (k < 16)
+            P[k / 4][k % 4] = NAN;
+        else if (k < 22)
+            ((k - 16) % 2 ? b->hi : b->lo)[(k - 16) / 2] = NAN;
+        else
+            *wn = NAN;
+        run("NaN", CBX_EINVAL, "NaN without CBX_EINVAL");
+    }
+    tc_identity_camera(P);
+    tc_set_box(b, -1, 1, 1, -1, -4, 4); *wn = 0.125;
+    run("empty box", CBX_EMPTY, "an empty box without CBX_EMPTY");
+    tc_set_box(b, -1, 1, -1, 1, -4, INFINITY);
+    run("an infinite end", CBX_OK, NULL);
+    for (k = 0; k < (int)(sizeof bad_wn / sizeof bad_wn[0]); k++) {
+        tc_set_box(b, -1, 1, -1, 1, -12, -8); *wn = bad_wn[k];   /* CBX_OK with wn = 0.125 */
+        run("near plane outside the domain", CBX_ERANGE, "wn outside the domain without CBX_ERANGE");
+    }
+    *wn = 0.125;
+    for (k = 0; k < 10; k++) {   /* each row, then each box end, outside the domain */
+        tc_identity_camera(P);
+        tc_set_box(b, -1, 1, -1, 1, -12, -8);
+        if (k < 4)
+            P[k][k == 3 ? 2 : k] = k == 3 ? -0x1p61 : 0x1p61;
+        else
+            (k % 2 ? b->hi : b->lo)[(k - 4) / 2] = k % 2 ? 0x1p61 : -0x1p61;
+        run("an entry or a box end above 2^60", CBX_ERANGE, "outside the domain without CBX_ERANGE");
+    }
+    /* a ratio a_j / b_j beyond 2^100 (W's x coefficient 2^-60, X's 2^50) */
+    tc_identity_camera(P);
+    P[3][0] = 0x1p-60;
+    P[0][0] = 0x1p50;
+    tc_set_box(b, -1, 1, -1, 1, -4, 4);
+    run("a ratio beyond the range of an end", CBX_OK, NULL);
+    /* a vertex's value beyond 2^99: X up to 2^60, W down to 2^-100 */
+    memset(P, 0, 16 * sizeof P[0][0]);
+    P[0][0] = 0x1p60; P[1][1] = 1; P[2][2] = 1; P[3][2] = 1;
+    tc_set_box(b, 1, 2, 0, 1, 0x1p-100, 1); *wn = 0x1p-100;
+    run("an end beyond 2^99 (a corner)", CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
+    tc_set_box(b, 1, 2, 0, 1, 0, 1);
+    run("an end beyond 2^99 (a crossing)", CBX_ERANGE, "an end beyond 2^99 without CBX_ERANGE");
+    if (mid)
+        mid();
+    /* rank-deficient maps: W constant (in front, on the plane, behind); X zero */
+    for (k = 0; k < 3; k++) {
+        memset(P, 0, 16 * sizeof P[0][0]);
+        P[0][0] = 1; P[1][1] = 1; P[2][2] = 1;
+        P[3][3] = k == 0 ? 2 : k == 1 ? 0.125 : 0.0625;
+        tc_set_box(b, -1, 1, -1, 1, -4, 4);
+        *wn = 0.125;
+        run("W constant", CBX_OK, NULL);
+    }
+    tc_identity_camera(P);
+    P[0][0] = P[0][1] = P[0][2] = P[0][3] = 0;
+    tc_set_box(b, -1, 1, -1, 1, -4, 4);
+    run("X_0 zero", CBX_OK, NULL);
+    /* a corner exactly on the near plane (integer map: W exact) */
+    memset(P, 0, 16 * sizeof P[0][0]);
+    P[0][0] = 1; P[1][1] = 1; P[2][2] = 1; P[3][0] = 1; P[3][1] = 1; P[3][2] = 1;
+    tc_set_box(b, 0, 1, 0, 1, 0, 1); *wn = 1;
+    run("corner on the near plane", CBX_OK, NULL);
+    *wn = 3;
+    run("only the far corner on the near plane", CBX_OK, NULL);
+    *wn = 2;
+    run("a diagonal plane through four corners", CBX_OK, NULL);
+    /* wide and narrow fields of view; W from 2^-90 to 2^100 */
+    for (k = 0; k < 8; k++) {
+        tc_scaled_camera(P, k);
+        tc_set_box(b, -3, 5, -2, 7, -9, 0.5); *wn = ldexp(0.01, 12 * k - 40);
+        run("scaled wide or narrow camera", CBX_OK, NULL);
+    }
+}
+
 void tc_fail_map(const char *what, const char *name, const double P[4][4])
 {
     int i;

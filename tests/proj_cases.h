@@ -75,6 +75,12 @@ void tc_sphere_hard(double P[4][4], double c[3], double *r, tc_run run);
  * beyond 2^99, rank-deficient maps, scaled wide and narrow cameras; gap:
  * a ball nearly tangent to the near plane, its radius 0.125 + gap */
 void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap, tc_run run);
+/* test_pnear's and test_pwide's (cbx_project_box_near): boxes around the
+ * identity camera's near plane, a point, huge and tiny boxes, NaN, an empty
+ * box, bad near planes, the domain's edges, ends beyond 2^99, rank-deficient
+ * maps, corners on the near plane, scaled wide and narrow cameras; mid (or
+ * NULL) runs the caller's own cases before the rank-deficient maps */
+void tc_box_hard(double P[4][4], cbx_box *b, double *wn, void (*mid)(void), tc_run run);
 
 /* the 3x3 identity */
 void tc_identity3(double rot[3][3]);

@@ -40,7 +40,7 @@ void pwt_ball_run(const char *name, cbx_status want, const char *what);
 void pwt_ell_run(const char *name, cbx_status want, const char *what);
 /* test_pnear's box cases, a box wholly in front of the camera, and the
  * float cases */
-void pwt_near_hard(void);
+void pwt_near_run(const char *name, cbx_status want, const char *what);
 void pwt_near_in_front(xu_rng *g);
 void pwt_float_hard(void);
 

@@ -458,7 +458,7 @@ int main(int argc, char **argv)
     pno_init(&Sn, seed + 99);
     pbo_init(&Sb, seed + 99);
     tc_sphere_hard(pwt_P, pwt_C, &pwt_R, pwt_sph_run);
-    pwt_near_hard();
+    tc_box_hard(pwt_P, &pwt_B, &pwt_WN, NULL, pwt_near_run);
     tc_ball_hard(pwt_P, pwt_C, &pwt_R, &pwt_WN, 0x1p-20, pwt_ball_run);
     pwt_float_hard();
     for (pwt_ell_kind = 0; pwt_ell_kind < 2; pwt_ell_kind++)
