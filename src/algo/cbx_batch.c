@@ -61,11 +61,11 @@ static cbx_status step(const cbx_affine *a CBX_CLS_PARAM, int fast, const cbx_bo
 {
     box_st r;
     if (fast != 0) {
-        r = one_fast(a, in + k);
+        r = one_fast(a, &in[k]);
     } else if (CBX_IS_GENERAL) {
-        r = one_box(a, in + k);
+        r = one_box(a, &in[k]);
     } else {
-        r = CBX_ONE_BOX(a, in + k);
+        r = CBX_ONE_BOX(a, &in[k]);
     }
     put_box(out, k, n, r.o);
     return r.s;

@@ -6,12 +6,14 @@
     ensures \valid_read(\result); */
 const char *cbx_status_name(cbx_status s)
 {
+    const char *n = "CBX_UNKNOWN";
     switch (s) {
-    case CBX_OK: return "CBX_OK";
-    case CBX_EMPTY: return "CBX_EMPTY";
-    case CBX_EINVAL: return "CBX_EINVAL";
-    case CBX_ERANGE: return "CBX_ERANGE";
-    case CBX_EBEHIND: return "CBX_EBEHIND";
-    default: return "CBX_UNKNOWN";
+    case CBX_OK: n = "CBX_OK"; break;
+    case CBX_EMPTY: n = "CBX_EMPTY"; break;
+    case CBX_EINVAL: n = "CBX_EINVAL"; break;
+    case CBX_ERANGE: n = "CBX_ERANGE"; break;
+    case CBX_EBEHIND: n = "CBX_EBEHIND"; break;
+    default: break;
     }
+    return n;
 }
