@@ -396,24 +396,10 @@ static void run_random(xu_exact *x, xu_stats *st, xu_stats *all, long n,
 
 /* Parse argv[k] as a number, or exit with a usage message (a typo must
  * not silently run 0 cases). */
-static unsigned long long arg_num(int argc, char **argv, int k,
-                                  unsigned long long dflt)
-{
-    char *end;
-    unsigned long long v;
-    if (argc <= k) return dflt;
-    v = strtoull(argv[k], &end, 0);
-    if (*argv[k] == '\0' || *argv[k] == '-' || *end != '\0') {
-        fprintf(stderr, "usage: %s [N] [seed]\n", argv[0]);
-        exit(2);
-    }
-    return v;
-}
-
 int main(int argc, char **argv)
 {
-    long n = (long)arg_num(argc, argv, 1, 1000000ULL);
-    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 0x5eed0fce27b0c5ULL);
+    long n = (long)xu_arg_num(argc, argv, 1, 1000000ULL, "[N] [seed]");
+    uint64_t seed = (uint64_t)xu_arg_num(argc, argv, 2, 0x5eed0fce27b0c5ULL, "[N] [seed]");
     xu_exact x;
     xu_stats hard, rnd, all;
     long perm_n = 0, perm_exact = 0, passed, failed;

@@ -132,24 +132,10 @@ static void run_ellipsoid(ctx *k, group *gh, group *gr, long n, uint64_t seed)
     }
 }
 
-static unsigned long long arg_num(int argc, char **argv, int k,
-                                  unsigned long long dflt)
-{
-    char *end;
-    unsigned long long v;
-    if (argc <= k) return dflt;
-    v = strtoull(argv[k], &end, 0);
-    if (*argv[k] == '\0' || *argv[k] == '-' || *end != '\0') {
-        fprintf(stderr, "usage: %s [N] [seed]\n", argv[0]);
-        exit(2);
-    }
-    return v;
-}
-
 int main(int argc, char **argv)
 {
-    long n = (long)arg_num(argc, argv, 1, 200000ULL);
-    uint64_t seed = (uint64_t)arg_num(argc, argv, 2, 0x5fe5eed0e11ULL);
+    long n = (long)xu_arg_num(argc, argv, 1, 200000ULL, "[N] [seed]");
+    uint64_t seed = (uint64_t)xu_arg_num(argc, argv, 2, 0x5fe5eed0e11ULL, "[N] [seed]");
     ctx k;
     group g[4];
     long passed = 0, failed = 0;
