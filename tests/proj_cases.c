@@ -454,7 +454,7 @@ void tc_ball_hard(double P[4][4], double c[3], double *r, double *wn, double gap
     }
 }
 
-static void tc_set_box(cbx_box *b, double l0, double h0, double l1, double h1, double l2, double h2)
+void tc_set_box(cbx_box *b, double l0, double h0, double l1, double h1, double l2, double h2)
 {
     b->lo[0] = l0; b->hi[0] = h0;
     b->lo[1] = l1; b->hi[1] = h1;

@@ -61,6 +61,8 @@ void tc_ball_general(xu_rng *g, double P[4][4], double c[3], double *r, double *
  * NULL (want CBX_OK) where the table asks for no status (the oracle judges
  * the status either way). */
 typedef void (*tc_run)(const char *name, cbx_status want, const char *what);
+/* b = [l0, h0] x [l1, h1] x [l2, h2] */
+void tc_set_box(cbx_box *b, double l0, double h0, double l1, double h1, double l2, double h2);
 /* c = (c0, c1, c2), *r = r0 */
 void tc_set_ball(double c[3], double *r, double c0, double c1, double c2, double r0);
 /* the k-th wide or narrow camera (k = 0 .. 7: focal factor 2^-6 .. 2^-9,

@@ -48,13 +48,6 @@ void pwt_ball_run(const char *name, cbx_status want, const char *what)
 }
 
 /* ---- cases: test_pnear's ---------------------------------------------------------- */
-static void set_box(double l0, double h0, double l1, double h1, double l2, double h2)
-{
-    pwt_B.lo[0] = l0; pwt_B.hi[0] = h0;
-    pwt_B.lo[1] = l1; pwt_B.hi[1] = h1;
-    pwt_B.lo[2] = l2; pwt_B.hi[2] = h2;
-}
-
 /* a box wholly in front of the camera plane (cbx_project_box gives CBX_OK
  * on the binary64 case), the near plane far below it */
 void pwt_near_in_front(xu_rng *g)
@@ -137,7 +130,7 @@ void pwt_float_hard(void)
         }
         for (s = 0; s < 23; s++) {   /* 16 map entries, the 6 box ends, wn */
             base_case();
-            set_box(0, 1, -1, 0, -8, -2);
+            tc_set_box(&pwt_B, 0, 1, -1, 0, -8, -2);
             if (s < 16)
                 pwt_P[s / 4][s % 4] = v[k];
             else if (s < 22)
@@ -154,7 +147,7 @@ void pwt_float_hard(void)
     for (k = 0; k < 5; k++)
         for (s = 0; s < 5; s++) {
             base_case();
-            set_box(0, 1, -1, 0, -8, -2);
+            tc_set_box(&pwt_B, 0, 1, -1, 0, -8, -2);
             if (k == 0) { pwt_B.lo[1] = 0.5f; pwt_B.hi[1] = 0.25f; }
             if (k == 1) pwt_B.lo[2] = INFINITY;
             if (k == 2) pwt_B.hi[0] = -INFINITY;
@@ -169,7 +162,7 @@ void pwt_float_hard(void)
         }
     /* a box one float wide; negative zeros */
     base_case();
-    set_box(0.5, 0x1.000002p-1, -0.25, -0.25, -4, -4);
+    tc_set_box(&pwt_B, 0.5, 0x1.000002p-1, -0.25, -0.25, -4, -4);
     pwt_run_near("a box one float wide");
     base_case();
     tc_set_ball(pwt_C, &pwt_R, -0.0, -0.0, -4, -0.0);

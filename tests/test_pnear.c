@@ -142,13 +142,6 @@ static void in_front_case(const char *name)
 }
 
 /* ---- cases ------------------------------------------------------------------- */
-static void set_box(double l0, double h0, double l1, double h1, double l2, double h2)
-{
-    B.lo[0] = l0; B.hi[0] = h0;
-    B.lo[1] = l1; B.hi[1] = h1;
-    B.lo[2] = l2; B.hi[2] = h2;
-}
-
 /* the five random cameras of test_pnear 20000 1 with W's magnitude at most
  * 2^20 wn that got CBX_ERANGE (the part in front a sliver) */
 static void sliver_cases(void)
@@ -171,7 +164,7 @@ static void sliver_cases(void)
         for (i = 0; i < 4; i++)
             for (j = 0; j < 4; j++)
                 P[i][j] = c[k][4 * i + j];
-        set_box(c[k][16], c[k][17], c[k][18], c[k][19], c[k][20], c[k][21]);
+        tc_set_box(&B, c[k][16], c[k][17], c[k][18], c[k][19], c[k][20], c[k][21]);
         WN = c[k][22];
         run_case("a sliver in front of the near plane");
     }
