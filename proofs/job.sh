@@ -62,8 +62,9 @@
 #             false from its context within CBX_SMOKE_STEPS resource units
 #             (a deterministic budget, independent of the machine's load);
 #             see SMOKE below for the categories
-# Writes build/proof/wp-NAME.log (the final pass) and build/proof/wp-NAME.time
-# (seconds; both passes).
+# Writes build/proof/wp-NAME.log (WP's console output, both passes),
+# wp-NAME.K.json (WP's report of run K: -wp-report-json), wp-NAME.runs
+# (those reports in run order) and wp-NAME.time (seconds; both passes).
 set -eu
 name=$1
 root=$(pwd)
@@ -178,13 +179,21 @@ case $name in
   *) echo "job.sh: unknown job $name" >&2; exit 2 ;;
 esac
 start=$(date +%s)
+# Each Frama-C run of the job writes WP's own report of its goals
+# (-wp-report-json: per function and property, the goals, the valid ones
+# and the prover of each); wp-NAME.runs lists them in run order and
+# proofs/report.py reads nothing else for the counts (a later run's entry
+# for a property replaces an earlier one's).  A run that did not finish
+# leaves no report: the job is then unfinished.
+rm -f $out/wp-$name.*.json $out/wp-$name.runs
+json() { echo "wp-$name.$1.json" >> $out/wp-$name.runs; echo "-wp-report-json $out/wp-$name.$1.json"; }
 case $name in
   S*)
     # the functions of group SG where an unproved fact enters (SMOKE above),
     # every hypothesis in each task (proofs/prune.ml: certbox_relevant
     # leaves a task whole when CBX_WP_WHOLE_TASKS is set)
     # shellcheck disable=SC2086
-    CBX_WP_WHOLE_TASKS=1 $FC $TU $OPTS -wp-fct $(fcts $TU $SG --dead-code) > $out/wp-$name.log 2>&1 || true ;;
+    CBX_WP_WHOLE_TASKS=1 $FC $TU $OPTS -wp-fct $(fcts $TU $SG --dead-code) $(json 1) > $out/wp-$name.log 2>&1 || true ;;
   *)
     # Two passes (proofs/README.md says why these limits): 1, CVC4 alone,
     # CBX_WP_TIMEOUT1 (120 s), enforced by Why3; 2, both provers raced with
@@ -226,26 +235,26 @@ case $name in
         fi
         # shellcheck disable=SC2086
         $FC $TU $OPTS $c -wp-prover cvc4r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
-          > $out/wp-$name.log 2>&1 || true
+          $(json 1) > $out/wp-$name.log 2>&1 || true
         if [ -n "$z" ]; then
           # shellcheck disable=SC2086
           $FC $TU $OPTS -wp-prop=$z -wp-prover z3r$fam -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
-            >> $out/wp-$name.log 2>&1 || true
+            $(json 2) >> $out/wp-$name.log 2>&1 || true
         fi ;;
       *)
         # shellcheck disable=SC2086
         $FC $TU $OPTS $SEL -wp-prover $P1 -wp-timeout ${CBX_WP_TIMEOUT1:-120} $CACHE \
-          > $out/wp-$name.log 2>&1 || true ;;
+          $(json 1) > $out/wp-$name.log 2>&1 || true ;;
     esac
-    again=$(python3 proofs/report.py --unproved-functions $out/wp-$name.log)
+    again=$(python3 proofs/report.py --unproved-functions $out $name)
     if [ -n "$again" ]; then
       echo "proof: job $name: pass 2 on $again"
       [ "$again" = ALL ] || SEL="-wp-fct $again"
       # shellcheck disable=SC2086
       $FC $TU $OPTS $SEL -wp-prover cvc4r$fam,z3r$fam -wp-timeout ${CBX_WP_TIMEOUT:-120} \
-        $CACHE >> $out/wp-$name.log 2>&1 || true
+        $CACHE $(json 3) >> $out/wp-$name.log 2>&1 || true
     fi ;;
 esac
 end=$(date +%s)
 echo $((end - start)) > $out/wp-$name.time
-echo "proof: job $name done in $((end - start)) s ($(grep -c '\] Goal\|Smoke-test' $out/wp-$name.log) goals)"
+echo "proof: job $name done in $((end - start)) s ($(python3 proofs/report.py --goals $out $name) goals)"

@@ -1,23 +1,25 @@
 #!/usr/bin/env python3
-"""Summarise the Frama-C/WP logs of proofs/run.sh as build/proof/report.md
+"""Summarise the proof jobs of proofs/run.sh as build/proof/report.md
 (printed on stdout; make proof-report copies it to proofs/report.md).
 
 Usage: report.py OUTDIR WALL_SECONDS
-OUTDIR holds wp-JOB.log and wp-JOB.time for every job of proofs/job.sh.
-Per family (binary64, binary32) and function: proved/total, provers, prover
-time; per job: goals and wall time; the smoke tests; RESULT: PROVED only
-when every job finished, every goal is proved and no smoke test failed.
+       report.py --unproved-functions OUTDIR JOB   (proofs/job.sh's pass 2)
+       report.py --goals OUTDIR JOB                (the job's goal count)
+OUTDIR holds, for every job of proofs/job.sh, WP's own reports of its runs
+(wp-JOB.K.json, written by -wp-report-json and listed in run order in
+wp-JOB.runs), wp-JOB.time (the job's wall time) and wp-JOB.log (WP's
+console output, read only for error messages).  The counts come from the
+JSON reports alone: per family (binary64, binary32) and function, the
+goals proved and in all and the prover of each; per job, goals and wall
+time; the smoke tests; RESULT: PROVED only when every run of every job
+finished (wrote its report), every goal is proved and every smoke test
+passed.
 """
-import glob
+import json
 import os
-import re
 import subprocess
 import sys
 
-GOAL = re.compile(r'^\[wp\] \[([^\]]+)\] Goal (\S+) : (\w+)(.*)$')
-FAIL = re.compile(r'^\[wp\] \[(Failed|Unsuccess|Timeout|Unknown|Stepout)\] Goal (\S+)')
-TIME = re.compile(r'\((\d+(?:\.\d+)?)(ms|s)\)')
-SMOKE = re.compile(r'^\[wp\] \[(\w+)\] Smoke-test (\S+)', re.M)
 JOBS = {
     'L64': 'binary64 lemmas', 'L32': 'binary32 lemmas',
     'LP64': 'binary64 lemmas of the projective balls and clipped bounds (proofs/lemmas_p.c)',
@@ -54,18 +56,59 @@ FAMILY = {'64': 'binary64 (double): `cbx_transform_box`, ...',
           '32': 'binary32 (float): `cbx_transform_boxf`, ... (same sources)'}
 
 
-def functions(log):
-    return sorted(set(re.findall(r'annotating function (\w+)', log)), key=len, reverse=True)
+def runs(outdir, name):
+    """The JSON reports of job name's runs, in run order; None when the
+    job did not start or a run did not finish (no report, or a broken one)."""
+    lst = os.path.join(outdir, 'wp-%s.runs' % name)
+    if not os.path.exists(lst):
+        return None
+    out = []
+    for line in open(lst, encoding='utf-8'):
+        path = os.path.join(outdir, line.strip())
+        if not line.strip():
+            continue
+        try:
+            with open(path, encoding='utf-8') as f:
+                out.append(json.load(f))
+        except (OSError, ValueError):
+            return None
+    return out or None
 
 
-def owner(goal, names):
-    g = goal[len('typed_'):] if goal.startswith('typed_') else goal
-    if g.startswith('lemma_'):
-        return '(lemmas)'
-    for n in names:
-        if g.startswith(n + '_'):
-            return n
-    return '(other)'
+def properties(reports):
+    """scope -> property -> WP's stats for it, merged over a job's runs (a
+    later run's entry replaces an earlier one's: pass 2 proves again every
+    goal of the functions it names).  scope is the function, or '(lemmas)'
+    for the lemmas of the axiomatics."""
+    props = {}
+    for rep in reports:
+        for f, sect in rep.get('wp:functions', {}).items():
+            for prop, st in sect.items():
+                if prop != 'wp:section':
+                    props.setdefault(f, {})[prop] = st
+        for sect in rep.get('wp:axiomatics', {}).values():
+            for prop, st in sect.items():
+                if prop != 'wp:section':
+                    props.setdefault('(lemmas)', {})[prop] = st
+    return props
+
+
+def prover_name(key):
+    """WP's JSON key of a prover ('CVC4:1.8:real64', 'qed') as WP prints it."""
+    if key == 'qed':
+        return 'Qed'
+    parts = key.split(':')
+    return '%s %s (%s)' % tuple(parts) if len(parts) == 3 else ' '.join(parts)
+
+
+def tally(st):
+    """(goals, valid goals, {prover: valid goals}, status) of one property."""
+    main = st.get('wp:main', {})
+    n, ok = main.get('total', 0), main.get('valid', 0)
+    provers = {prover_name(k): v.get('valid', 0) for k, v in st.items()
+               if k != 'wp:main' and v.get('valid', 0)}
+    bad = [k for k in main if k not in ('total', 'valid', 'rank') and main[k]]
+    return n, ok, provers, (bad[0] if bad else 'valid')
 
 
 def tool(cmd):
@@ -83,53 +126,37 @@ def collect(outdir):
     smoke_n = {'64': 0, '32': 0}
     unfinished = []
     for name in JOBS:
-        path = os.path.join(outdir, 'wp-%s.log' % name)
-        if not os.path.exists(path):
+        reports = runs(outdir, name)
+        if reports is None:
             unfinished.append(name)
             continue
-        text = open(path, encoding='utf-8', errors='replace').read()
         fam = '64' if '64' in name else '32'
         tpath = os.path.join(outdir, 'wp-%s.time' % name)
         secs = open(tpath).read().strip() if os.path.exists(tpath) else '?'
         job_time[name] = secs
-        names = functions(text)
         n_goals = 0
-        if name.startswith('S'):
-            st = SMOKE.findall(text)
-            smoke_n[fam] += len(st)
-            bad_smoke += ['%s: %s (%s)' % (name, n, v) for v, n in st if v != 'Passed']
-            n_goals = len(st)
-            if not st:
-                unfinished.append(name)
-        else:
-            # every Frama-C run of the job finished (a lemma job runs two
-            # in pass 1, one per prover: proofs/job.sh)
-            if len(re.findall(r'Proved goals:\s+\d+ / \d+', text)) < max(1, text.count('[wp] Running WP plugin')):
-                unfinished.append(name)
-            # a goal's last result counts (a job may run two passes)
-            last = {}
-            for line in text.splitlines():
-                m = GOAL.match(line)
-                if m and m.group(1) not in ('Failed', 'Unsuccess', 'Timeout', 'Unknown', 'Stepout'):
-                    prover, goal, status, rest = m.groups()
-                    t = TIME.findall(rest)
-                    s = (float(t[-1][0]) / (1000.0 if t[-1][1] == 'ms' else 1.0)) if t else 0.0
-                    last[goal] = (status == 'Valid', prover, s, status)
+        for f, props in sorted(properties(reports).items()):
+            for prop, st in sorted(props.items()):
+                n, ok, provers, status = tally(st)
+                n_goals += n
+                if name.startswith('S'):
+                    # a smoke goal is valid when it passed (the prover did
+                    # not derive false from its context)
+                    smoke_n[fam] += n
+                    if ok < n:
+                        bad_smoke.append('%s: %s (%s)' % (name, prop, status))
                     continue
-                m = FAIL.match(line)
-                if m:
-                    last[m.group(2)] = (False, None, 0.0, m.group(1))
-            for goal, (ok, prover, s, status) in last.items():
-                f = owner(goal, names)
-                d = per[fam].setdefault(f, {'ok': 0, 'n': 0, 'provers': {}, 'time': 0.0})
-                d['n'] += 1
-                d['time'] += s
-                n_goals += 1
-                if ok:
-                    d['ok'] += 1
-                    d['provers'][prover] = d['provers'].get(prover, 0) + 1
-                else:
-                    failed.append('%s: %s (%s)' % (name, goal, status))
+                d = per[fam].setdefault(f, {'ok': 0, 'n': 0, 'provers': {}})
+                d['n'] += n
+                d['ok'] += ok
+                for p, c in provers.items():
+                    d['provers'][p] = d['provers'].get(p, 0) + c
+                if ok < n:
+                    failed.append('%s: %s (%s)' % (name, prop, status))
+        if name.startswith('S') and n_goals == 0:
+            unfinished.append(name)
+        log = os.path.join(outdir, 'wp-%s.log' % name)
+        text = open(log, encoding='utf-8', errors='replace').read() if os.path.exists(log) else ''
         errors += ['%s: %s' % (name, l.strip()) for l in text.splitlines()
                    if 'Why3 Error' in l or 'User Error' in l or 'aborted' in l]
         jobs.append((name, JOBS[name], n_goals, secs))
@@ -143,30 +170,32 @@ def collect(outdir):
             'proved': proved, 'total': total, 'ok': ok}
 
 
-def unproved_functions(log):
-    """The functions with a goal whose last result is not Valid (for the
-    second pass of proofs/job.sh), comma-separated."""
-    text = open(log, encoding='utf-8', errors='replace').read()
-    names = functions(text)
-    last = {}
-    for line in text.splitlines():
-        m = GOAL.match(line)
-        if m:
-            last[m.group(2)] = m.group(3) == 'Valid' and m.group(1) not in (
-                'Failed', 'Unsuccess', 'Timeout', 'Unknown', 'Stepout')
-            continue
-        m = FAIL.match(line)
-        if m:
-            last[m.group(2)] = False
-    fs = sorted(set(owner(g, names) for g, ok in last.items() if not ok))
-    if any(f.startswith('(') for f in fs):
-        return 'ALL'   # a lemma (no function to name): the whole job again
+def unproved_functions(outdir, name):
+    """The functions with a goal not proved in the job's runs so far (for
+    the second pass of proofs/job.sh), comma-separated; ALL for a lemma
+    (no function to name: the whole job again); empty when every goal is
+    proved or the run left no report (the job is then unfinished)."""
+    reports = runs(outdir, name)
+    if reports is None:
+        return ''
+    fs = sorted(f for f, props in properties(reports).items()
+                if any(tally(st)[1] < tally(st)[0] for st in props.values()))
+    if '(lemmas)' in fs:
+        return 'ALL'
     return ','.join(fs)
+
+
+def goals(outdir, name):
+    reports = runs(outdir, name)
+    return sum(tally(st)[0] for props in properties(reports or []).values() for st in props.values())
 
 
 def main():
     if sys.argv[1] == '--unproved-functions':
-        print(unproved_functions(sys.argv[2]))
+        print(unproved_functions(sys.argv[2], sys.argv[3]))
+        return
+    if sys.argv[1] == '--goals':
+        print(goals(sys.argv[2], sys.argv[3]))
         return
     outdir, wall = sys.argv[1], sys.argv[2]
     data = collect(outdir)
@@ -180,17 +209,18 @@ def main():
               'unchanged goals are read back from earlier runs); `make proof-check` proves every goal from scratch. '
               if cached else
               'was proved by the provers in this run: no job keeps a WP cache (`-wp-cache none`). ')
-           + 'Smoke tests in jobs of their own '
+           + 'The counts are WP\'s own (`-wp-report-json`, one report per Frama-C run). '
+           'Smoke tests in jobs of their own '
            '(`-wp-smoke-tests`, CVC4 with a step budget).\n']
     for fam in ('64', '32'):
         out.append('## %s\n' % FAMILY[fam])
-        out.append('| function | proved / total | provers (goals) | prover time (s) |')
-        out.append('|---|---|---|---|')
+        out.append('| function | proved / total | provers (goals) |')
+        out.append('|---|---|---|')
         fp = ft = 0
         for f in sorted(per[fam]):
             d = per[fam][f]
             pv = ', '.join('%s %d' % (p, c) for p, c in sorted(d['provers'].items()))
-            out.append('| %s | %d / %d | %s | %.1f |' % (f, d['ok'], d['n'], pv, d['time']))
+            out.append('| %s | %d / %d | %s |' % (f, d['ok'], d['n'], pv))
             fp += d['ok']
             ft += d['n']
         out.append('')

@@ -22,7 +22,7 @@ check=0; [ "${1:-}" = --check ] && check=1
 [ $check = 1 ] && unset CBX_WP_KEEP_CACHE
 out=build/proof
 mkdir -p $out
-rm -f $out/wp-*.log $out/wp-*.time $out/inputs.sha256 $out/report.md
+rm -f $out/wp-*.log $out/wp-*.time $out/wp-*.json $out/wp-*.runs $out/inputs.sha256 $out/report.md
 # the inputs as they are when the run starts (make evidence checks them)
 inputs=$(sh proofs/inputs.sh)
 conf=$(sh proofs/setup.sh $out)

@@ -196,8 +196,9 @@ def proof(raw):
                         '(proofs/inputs.sh: %s, the run: %s); run make proof' % (digest, ran_on))
     data = report.collect(d)
     os.makedirs(os.path.join(raw, 'proof'), exist_ok=True)
-    for f in glob.glob(os.path.join(d, 'wp-*.log')):
-        shutil.copy(f, os.path.join(raw, 'proof'))
+    for pat in ('wp-*.log', 'wp-*.json', 'wp-*.runs'):
+        for f in glob.glob(os.path.join(d, pat)):
+            shutil.copy(f, os.path.join(raw, 'proof'))
     # the report of that very run (proofs/run.sh writes it beside the logs;
     # the committed proofs/report.md may be older: make proof-report)
     rep = os.path.join(d, 'report.md')
