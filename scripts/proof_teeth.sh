@@ -50,9 +50,9 @@ case_ c2b-lo-widened src/core/cbx_endpoints.h cbx_c2b proofs/all_f.c s2,e2,p2,f2
   "    cbx_fp s = cbx_sub_rn(c, h);" \
   "    cbx_fp s = cbx_sub_rn(cbx_sub_rn(c, h), h);" &
 # 3. the transform's kernel: the lower end widened twice
-case_ kernel-lo-widened-twice src/algo/cbx_kernel.h cbx_end_lo proofs/all.c tight tight \
-  "    return cbx_sub_rn(s, w);" \
-  "    return cbx_sub_rn(cbx_sub_rn(s, w), w);" &
+case_ kernel-lo-widened-twice src/algo/cbx_kernel.h cbx_end proofs/all.c tight_lo tight_lo \
+  ": cbx_sub_rn(s, w);" \
+  ": cbx_sub_rn(cbx_sub_rn(s, w), w);" &
 # 4. the interval-matrix kernel: the lower end widened twice
 case_ imat-lo-widened-twice src/f64/cbx_ikernel.h cbx_irow proofs/imat.c tight tight \
   "    r.lo = cbx_sub_rn(slo, w);" \

@@ -94,14 +94,16 @@ static inline cbx_fp cbx_sum3(int up, cbx_fp t, cbx_fp m0, cbx_fp m1, cbx_fp m2,
     return s3;
 }
 
-/* The lower end: s (the rounded sum, within 4 u (1 + 2^-20) S + 10 eta of
- * the exact end) moved down by the widening w (about 5.5 u S): below the
- * exact end and within 12 u S + eta_512 of it.  cbx_end_hi: the mirror. */
+/* One end: s (the rounded sum, within 4 u (1 + 2^-20) S + 10 eta of the
+ * exact end) moved outward by the widening w (about 5.5 u S): down for
+ * the lower end (up == 0), up for the upper end; beyond the exact end and
+ * within 12 u S + eta_512 of it.  Written once for both ends (cbx_axis
+ * calls it with a constant up, so the compiled kernel has no branch). */
 /*@ requires fin: \is_finite(s) && \is_finite(w);
-    requires rs: -row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+    requires rs: -row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= row_sel(up, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
                  <= row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 4*CBX_RT;
     requires se: -(CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA)
-                 <= s - row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
+                 <= s - row_sel(up, m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
                  <= CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA;
     requires w1: w >= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - CBX_U16)
                       + CBX_ETA64 - CBX_ETA8;
@@ -109,36 +111,16 @@ static inline cbx_fp cbx_sum3(int up, cbx_fp t, cbx_fp m0, cbx_fp m1, cbx_fp m2,
                       + CBX_ETA256 + CBX_ETA8;
     assigns \nothing;
     ensures fin: \is_finite(\result);
-    ensures sound: \result <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    ensures tight: lo_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures sound_lo: up == 0 ==> \result <= row_lo(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures sound_hi: up != 0 ==> \result >= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures tight_lo: up == 0 ==> lo_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    ensures tight_hi: up != 0 ==> hi_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
 */
-static inline cbx_fp cbx_end_lo(cbx_fp s, cbx_fp w, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
-                                cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
+static inline cbx_fp cbx_end(int up, cbx_fp s, cbx_fp w, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
+                             cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
 {
     (void)m0; (void)m1; (void)m2; (void)t; (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
-    return cbx_sub_rn(s, w);
-}
-
-/*@ requires fin: \is_finite(s) && \is_finite(w);
-    requires rs: -row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-                 <= row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) <= 4*CBX_RT;
-    requires se: -(CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA)
-                 <= s - row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2)
-                 <= CBX_U4P * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) + 10*CBX_ETA;
-    requires w1: w >= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 - CBX_U16)
-                      + CBX_ETA64 - CBX_ETA8;
-    requires w2: w <= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + CBX_U16)
-                      + CBX_ETA256 + CBX_ETA8;
-    assigns \nothing;
-    ensures fin: \is_finite(\result);
-    ensures sound: \result >= row_hi(m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    ensures tight: hi_tight(\result, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-*/
-static inline cbx_fp cbx_end_hi(cbx_fp s, cbx_fp w, cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
-                                cbx_fp l0, cbx_fp h0, cbx_fp l1, cbx_fp h1, cbx_fp l2, cbx_fp h2)
-{
-    (void)m0; (void)m1; (void)m2; (void)t; (void)l0; (void)h0; (void)l1; (void)h1; (void)l2; (void)h2;
-    return cbx_add_rn(s, w);
+    return (up != 0) ? cbx_add_rn(s, w) : cbx_sub_rn(s, w);
 }
 
 /* Both ends of one output axis: below (above) the exact end, and within
@@ -172,8 +154,8 @@ static inline cbx_ends cbx_axis(cbx_fp m0, cbx_fp m1, cbx_fp m2, cbx_fp t,
                         + CBX_ETA64 - CBX_ETA8; */
     /*@ assert w2: w <= CBX_U5H * row_mag(m0, m1, m2, t, l0, h0, l1, h1, l2, h2) * (1 + CBX_U16)
                         + CBX_ETA256 + CBX_ETA8; */
-    r.lo = cbx_end_lo(slo, w, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
-    r.hi = cbx_end_hi(shi, w, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    r.lo = cbx_end(0, slo, w, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
+    r.hi = cbx_end(1, shi, w, m0, m1, m2, t, l0, h0, l1, h1, l2, h2);
     return r;
 }
 
